@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages grainlab needs to build, test and plot.
+# Idempotent: asks apt only for what is missing. Works as root or with sudo.
+set -euo pipefail
+
+packages=(
+  build-essential cmake pkg-config
+  libeigen3-dev          # vectors, quaternions, matrices
+  libqhull-dev           # convex hulls
+  libmeshoptimizer-dev   # mesh simplification
+  libassimp-dev          # STL / OBJ / PLY reading
+  libtomlplusplus-dev    # config files
+  libcli11-dev           # command line
+  nlohmann-json3-dev     # JSON output
+  libfmt-dev             # formatting
+  libgtest-dev libgmock-dev  # tests
+  libbenchmark-dev       # micro benchmarks
+  libomp-dev             # OpenMP (gcc ships its own libgomp; this is for clang)
+  python3 python3-matplotlib  # report plots
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "setup: all ${#packages[@]} Debian packages present"
+  exit 0
+fi
+
+echo "setup: installing missing Debian packages: ${missing[*]}"
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then
+  if command -v sudo >/dev/null; then SUDO="sudo"; else
+    echo "setup: need root (or sudo) to run apt-get install ${missing[*]}" >&2; exit 1
+  fi
+fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"

@@ -1,0 +1,3 @@
+// grainlab command line (placeholder until the dynamics layer lands).
+#include <cstdio>
+int main() { std::puts("grainlab"); return 0; }

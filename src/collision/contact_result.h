@@ -1,0 +1,15 @@
+// What every narrowphase routine returns for a pair of shapes A and B.
+#pragma once
+
+#include "core/types.h"
+
+namespace grainlab {
+
+struct ContactResult {
+  bool touching = false;  // shapes overlap (depth > 0)
+  double depth = 0;       // overlap if touching, else minus the separation distance (m)
+  Vec3 normal = Vec3::UnitZ();  // unit, points from A towards B: moving B by depth*normal separates them
+  Vec3 point = Vec3::Zero();    // contact point, midway between the two surfaces (m)
+};
+
+}  // namespace grainlab

@@ -1,0 +1,25 @@
+// Convex hull (qhull) with the vertex adjacency that support queries climb.
+#pragma once
+
+#include "geometry/trimesh.h"
+
+#include <span>
+
+namespace grainlab {
+
+struct ConvexHull {
+  std::vector<Vec3> vertices;   // hull vertices only
+  std::vector<Face> faces;      // triangulated, outward (counter-clockwise from outside)
+  // Vertex adjacency in compressed rows: neighbours of v are
+  // adjacency[adjacency_offsets[v] .. adjacency_offsets[v+1]).
+  std::vector<Index> adjacency_offsets;
+  std::vector<Index> adjacency;
+
+  TriMesh mesh() const { return {vertices, faces}; }
+};
+
+// Hull of a point set. Throws InputError if the points are fewer than 4,
+// non-finite, or (nearly) coplanar.
+ConvexHull convex_hull(std::span<const Vec3> points);
+
+}  // namespace grainlab
