@@ -20,8 +20,9 @@ class SweepAndPrune {
   void find_pairs(std::span<const Aabb> boxes, std::vector<BodyPair>& pairs);
 
  private:
-  struct Endpoint { double value; Index body; };  // interval start of `body`
-  std::vector<Index> order_;  // bodies sorted by lo along axis_
+  std::vector<Index> order_;  // bodies sorted by lo along axis_ (kept between calls)
+  struct SortedBox { double lo0, hi0, lo1, hi1, lo2, hi2; };  // sweep axis first
+  std::vector<SortedBox> sorted_;  // boxes in sorted order (sweep scratch)
   int axis_ = 0;
 };
 

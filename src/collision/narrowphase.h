@@ -20,6 +20,7 @@ ContactResult collide(const PlaneShape& a, const PolytopeShape& b);
 // `dir` is the warm-start search direction (e.g. last step's normal for this
 // pair, any non-zero vector the first time); it is updated for the next call.
 ContactResult collide_convex(const PolytopeShape& a, const PolytopeShape& b, Vec3& dir);
+ContactResult collide_convex(const SphereShape& a, const PolytopeShape& b, Vec3& dir);
 ContactResult collide_convex(const BoxShape& a, const PolytopeShape& b, Vec3& dir);
 ContactResult collide_convex(const BoxShape& a, const SphereShape& b, Vec3& dir);
 

@@ -7,6 +7,7 @@
 
 namespace grainlab {
 
+// A convex polytope: triangulated surface plus the edge graph for hill climbing.
 struct ConvexHull {
   std::vector<Vec3> vertices;   // hull vertices only
   std::vector<Face> faces;      // triangulated, outward (counter-clockwise from outside)
@@ -15,11 +16,16 @@ struct ConvexHull {
   std::vector<Index> adjacency_offsets;
   std::vector<Index> adjacency;
 
+  // The hull as a closed triangle mesh.
   TriMesh mesh() const { return {vertices, faces}; }
 };
 
 // Hull of a point set. Throws InputError if the points are fewer than 4,
 // non-finite, or (nearly) coplanar.
 ConvexHull convex_hull(std::span<const Vec3> points);
+
+// True if no vertex lies farther than tol * (bounding-box diagonal) outside the
+// plane of any non-degenerate face: the mesh is (within tol) its own hull.
+bool is_convex(const TriMesh& mesh, double tol);
 
 }  // namespace grainlab

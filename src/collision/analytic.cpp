@@ -1,0 +1,87 @@
+// Closed-form narrowphase: sphere-sphere, plane-sphere, plane-polytope.
+#include "collision/narrowphase.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace grainlab {
+
+ContactResult collide(const SphereShape& a, const SphereShape& b) {
+  ContactResult r;
+  const Vec3 d = b.pos - a.pos;
+  const double dist = d.norm();
+  // Coincident centres: any direction is a minimum-translation direction.
+  r.normal = dist > 1e-300 ? Vec3(d / dist) : Vec3::UnitZ();
+  r.depth = a.radius + b.radius - dist;
+  r.touching = r.depth > 0;
+  // Midway between the surface point of A (a.pos + ra n) and of B (b.pos - rb n).
+  r.point = 0.5 * (a.pos + b.pos) + 0.5 * (a.radius - b.radius) * r.normal;
+  return r;
+}
+
+ContactResult collide(const PlaneShape& a, const SphereShape& b) {
+  ContactResult r;
+  r.normal = a.normal;
+  const double s = (b.pos - a.point).dot(a.normal);  // height of the centre
+  r.depth = b.radius - s;
+  r.touching = r.depth > 0;
+  // Midway between the sphere's lowest point (height s - radius) and the plane.
+  r.point = b.pos - 0.5 * (s + b.radius) * a.normal;
+  return r;
+}
+
+// Deepest vertex by a support query on -normal, then a breadth-first walk from
+// it over the vertices below the plane. That set is connected in the edge graph
+// (from any vertex below the plane a height-decreasing edge path reaches the
+// deepest vertex), so the walk finds all of them while visiting only them and
+// their neighbours.
+ContactResult collide(const PlaneShape& a, const PolytopeShape& b) {
+  ContactResult r;
+  r.normal = a.normal;
+  const ConvexPolytope& poly = *b.poly;
+  const Vec3 nl = b.scale * (b.rot.transpose() * a.normal);  // height = h0 + dot(v_local, nl)
+  const double h0 = (b.pos - a.point).dot(a.normal);
+  const Index deepest = poly.support_index(-nl, b.hint);
+  b.hint = deepest;
+  const double hmin = h0 + poly.vertex(deepest).dot(nl);
+  r.depth = -hmin;
+  r.touching = r.depth > 0;
+  const Vec3 pdeep = b.pos + b.scale * (b.rot * poly.vertex(deepest));
+  if (!r.touching) {
+    r.point = pdeep - 0.5 * hmin * a.normal;
+    return r;
+  }
+
+  // Visit stamps and queue are per thread and reused: no allocation once warm.
+  thread_local std::vector<std::uint32_t> stamp;
+  thread_local std::vector<Index> queue;
+  thread_local std::uint32_t generation = 0;
+  if (stamp.size() < poly.size()) stamp.assign(poly.size(), 0);
+  if (++generation == 0) {
+    std::fill(stamp.begin(), stamp.end(), 0u);
+    generation = 1;
+  }
+  queue.clear();
+  queue.push_back(deepest);
+  stamp[deepest] = generation;
+  Vec3 wsum = Vec3::Zero();
+  double wtot = 0;
+  for (std::size_t q = 0; q < queue.size(); ++q) {
+    const Index v = queue[q];
+    const double w = -(h0 + poly.vertex(v).dot(nl));  // depth of v below the plane
+    wsum += w * poly.vertex(v);
+    wtot += w;
+    for (const Index* it = poly.neighbours_begin(v); it != poly.neighbours_end(v); ++it) {
+      if (stamp[*it] == generation) continue;
+      stamp[*it] = generation;
+      if (h0 + poly.vertex(*it).dot(nl) < 0) queue.push_back(*it);
+    }
+  }
+  const Vec3 c = b.pos + b.scale * (b.rot * (wsum / wtot));
+  // Move the centroid along the normal to halfway between plane and deepest point.
+  const double hc = (c - a.point).dot(a.normal);
+  r.point = c - (hc + 0.5 * r.depth) * a.normal;
+  return r;
+}
+
+}  // namespace grainlab

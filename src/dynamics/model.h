@@ -1,0 +1,86 @@
+// The fixed part of a simulation (MuJoCo's mjModel): shapes, materials, body
+// constants, walls, the contact law. Nothing here changes while a run steps.
+//
+// Every body's local frame is its principal frame: origin at the centre of
+// mass, axes along the principal axes, so its inertia tensor is diagonal.
+// A shape is shared by all bodies that use it; each body has its own uniform
+// scale s, so mass = rho V s^3 and inertia = rho J s^5 (V, J of the shape at s = 1).
+#pragma once
+
+#include "collision/shapes.h"
+#include "core/types.h"
+#include "dynamics/material.h"
+#include "geometry/trimesh.h"
+
+#include <string>
+#include <vector>
+
+namespace grainlab {
+
+struct Shape {
+  enum class Kind { Sphere = 0, Polytope = 1 };
+  Kind kind = Kind::Sphere;
+  std::string name;
+  double volume = 0;                 // m^3 at scale 1
+  Vec3 unit_moments = Vec3::Zero();  // principal moments per unit density at scale 1 (m^5)
+  double equivalent_radius = 0;      // radius of the sphere of equal volume, scale 1 (m)
+  double bounding_radius = 0;        // max distance of the surface from the centroid, scale 1 (m)
+  ConvexPolytope hull;               // polytope shapes: convex hull in the principal frame
+  TriMesh mesh;                      // polytope shapes: the surface in the principal frame
+};
+
+// Constants of one body, derived from its shape, material and scale.
+struct BodyModel {
+  Index shape = 0;
+  Index material = 0;
+  double scale = 1;
+  double mass = 0, inv_mass = 0;  // inertial mass (kg), density scaling included
+  double gravity_mass = 0;        // true mass (kg): weight = gravity_mass * g
+  Vec3 inertia = Vec3::Zero();    // principal moments (kg m^2), density scaling included
+  Vec3 inv_inertia = Vec3::Zero();
+  double radius = 0;              // Hertz radius: volume-equivalent radius (m)
+  double bounding_radius = 0;     // m
+};
+
+// A rigid wall. Planes are half-spaces (solid behind the normal, the local +z
+// axis); boxes are solid oriented boxes. Their motion is prescribed.
+struct WallModel {
+  enum class Kind { Plane = 0, Box = 1 };
+  Kind kind = Kind::Plane;
+  std::string name;
+  Index material = 0;
+  Vec3 half = Vec3::Zero();  // box half extents (m)
+};
+
+struct Model {
+  ContactLaw law = ContactLaw::HertzMaterial;
+  Vec3 gravity{0, 0, -9.81};  // m/s^2
+  double density_scale = 1;   // multiplies inertial mass and inertia, not weight
+  std::vector<Material> materials;
+  std::vector<Shape> shapes;
+  std::vector<BodyModel> bodies;
+  std::vector<WallModel> walls;
+
+  // Shapes. A mesh shape is moved to its principal frame; its hull is the
+  // collision shape (exact for convex grains), its mesh gives mass properties.
+  Index add_sphere_shape(double radius, std::string name = "sphere");
+  Index add_mesh_shape(const TriMesh& mesh, std::string name);
+  Index add_material(const Material& m);
+
+  // Coefficients of a material pair (valid after finalize()).
+  const PairCoefficients& pair(Index ma, Index mb) const {
+    return pair_table_[static_cast<std::size_t>(ma) * materials.size() + mb];
+  }
+  // Validates materials and mixes the pair table; called by World.
+  void finalize();
+
+  // Constants of a body of this shape, material and scale.
+  BodyModel make_body(Index shape, Index material, double scale) const;
+  // Recomputes the body constants (after density_scale changes).
+  void rescale_bodies();
+
+ private:
+  std::vector<PairCoefficients> pair_table_;
+};
+
+}  // namespace grainlab

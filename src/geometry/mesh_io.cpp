@@ -1,0 +1,207 @@
+// Mesh files in and out. assimp parses the formats; grainlab checks what
+// assimp is lenient about (a truncated binary STL, an empty file) and turns
+// every failure into a message naming the file, the defect and a fix.
+//
+// Binary STL layout: 80-byte header, uint32 triangle count n (little
+// endian), then n records of 50 bytes (normal and three vertices as 12
+// float32, then a uint16 attribute), so a whole file is 84 + 50 n bytes.
+// An ASCII STL starts with "solid"; a binary header may too, so the size
+// test decides first.
+#include "geometry/mesh_io.h"
+
+#include "core/error.h"
+
+#include <assimp/Importer.hpp>
+#include <assimp/config.h>
+#include <assimp/mesh.h>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <bit>
+#include <cctype>
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <map>
+#include <system_error>
+
+namespace grainlab {
+namespace {
+
+static_assert(std::endian::native == std::endian::little, "binary STL I/O assumes a little-endian host");
+
+std::string lower_extension(const std::filesystem::path& path) {
+  std::string ext = path.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char ch) { return std::tolower(ch); });
+  return ext;
+}
+
+// Refuses a binary STL whose size does not hold the triangles its header announces.
+void validate_stl(const std::filesystem::path& path, std::uintmax_t size) {
+  const std::string name = path.string();
+  std::ifstream in(path, std::ios::binary);
+  char head[84] = {};
+  in.read(head, static_cast<std::streamsize>(std::min<std::uintmax_t>(size, 84)));
+  if (!in && !in.eof()) input_error("mesh '{}': cannot be read; check its permissions", name);
+  std::size_t i = 0;
+  while (i < size && i < 80 && std::isspace(static_cast<unsigned char>(head[i]))) ++i;
+  const bool says_solid = size >= i + 5 && std::strncmp(head + i, "solid", 5) == 0;
+  std::uint32_t n = 0;
+  std::memcpy(&n, head + 80, 4);
+  const std::uintmax_t expected = 84 + 50 * static_cast<std::uintmax_t>(n);
+  if (size >= 84 && size == expected) return;  // a well-formed binary STL
+  if (says_solid && i > 0) {
+    input_error("mesh '{}': ASCII STL has {} blank character(s) before 'solid'; delete them so that "
+                "the file starts with 'solid'",
+                name, i);
+  }
+  if (says_solid) return;  // ASCII: assimp parses and checks it
+  if (size >= 84) {
+    if (size < expected) {
+      input_error("mesh '{}': binary STL is truncated (header says {} triangles, file holds {}); "
+                  "re-export the mesh",
+                  name, n, (size - 84) / 50);
+    }
+    return;  // trailing bytes after the last triangle: some exporters pad
+  }
+  input_error("mesh '{}': too short for a binary STL ({} bytes; header and triangle count alone "
+              "take 84) and not ASCII STL (no 'solid'); re-export the mesh",
+              name, size);
+}
+
+// Writes `bytes` to `path` through a temporary file in the same directory, renamed into place.
+void write_atomically(const std::filesystem::path& path, const std::string& bytes) {
+  const std::filesystem::path tmp = path.string() + ".tmp-" + std::to_string(::getpid());
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    if (!out) {
+      input_error("cannot write '{}': {}; check that the directory exists and is writable",
+                  path.string(), std::strerror(errno));
+    }
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    out.close();
+    if (!out) {
+      std::error_code ec;
+      std::filesystem::remove(tmp, ec);
+      input_error("cannot write '{}': write failed (disk full?)", path.string());
+    }
+  }
+  std::error_code ec;
+  std::filesystem::rename(tmp, path, ec);
+  if (ec) {
+    std::filesystem::remove(tmp, ec);
+    input_error("cannot write '{}': renaming the temporary file failed ({})", path.string(), ec.message());
+  }
+}
+
+}  // namespace
+
+TriMesh read_mesh(const std::filesystem::path& path) {
+  const std::string name = path.string();
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) {
+    input_error("mesh '{}': file not found; check the path", name);
+  }
+  if (!std::filesystem::is_regular_file(path, ec)) {
+    input_error("mesh '{}': not a regular file; give the path of an STL, OBJ or PLY file", name);
+  }
+  const std::string ext = lower_extension(path);
+  if (ext != ".stl" && ext != ".obj" && ext != ".ply") {
+    input_error("mesh '{}': unsupported file type '{}'; convert it to STL, OBJ or PLY", name, ext);
+  }
+  const std::uintmax_t size = std::filesystem::file_size(path, ec);
+  if (ec) input_error("mesh '{}': cannot read its size ({})", name, ec.message());
+  if (size == 0) input_error("mesh '{}': the file is empty (0 bytes); re-export the mesh", name);
+  if (ext == ".stl") validate_stl(path, size);
+
+  Assimp::Importer importer;
+  // Drop per-vertex normals, colours and texture coordinates so that vertex
+  // joining merges by position only.
+  importer.SetPropertyInteger(AI_CONFIG_PP_RVC_FLAGS,
+                              aiComponent_NORMALS | aiComponent_TANGENTS_AND_BITANGENTS |
+                                  aiComponent_COLORS | aiComponent_TEXCOORDS);
+  const aiScene* scene = importer.ReadFile(
+      path.string(), aiProcess_RemoveComponent | aiProcess_JoinIdenticalVertices | aiProcess_Triangulate);
+  if (scene == nullptr) {
+    input_error("mesh '{}': cannot be parsed ({}); check that it is a valid {} file or re-export it",
+                name, importer.GetErrorString(), ext.substr(1));
+  }
+
+  // Concatenate, merging exactly identical positions across meshes.
+  TriMesh m;
+  std::map<std::array<double, 3>, Index> seen;
+  Index non_finite = 0;
+  for (unsigned mi = 0; mi < scene->mNumMeshes; ++mi) {
+    const aiMesh* am = scene->mMeshes[mi];
+    std::vector<Index> local(am->mNumVertices);
+    for (unsigned v = 0; v < am->mNumVertices; ++v) {
+      const aiVector3D& p = am->mVertices[v];
+      const Vec3 q(p.x, p.y, p.z);
+      if (!q.allFinite()) {
+        ++non_finite;
+        local[v] = static_cast<Index>(m.vertices.size());
+        m.vertices.push_back(q);
+        continue;
+      }
+      const auto [it, inserted] = seen.try_emplace({q.x(), q.y(), q.z()}, static_cast<Index>(m.vertices.size()));
+      if (inserted) m.vertices.push_back(q);
+      local[v] = it->second;
+    }
+    for (unsigned f = 0; f < am->mNumFaces; ++f) {
+      const aiFace& af = am->mFaces[f];
+      if (af.mNumIndices != 3) continue;  // points and lines bound no solid
+      m.faces.push_back({local[af.mIndices[0]], local[af.mIndices[1]], local[af.mIndices[2]]});
+    }
+  }
+  if (non_finite) {
+    input_error("mesh '{}': {} {} non-finite (NaN or infinite) coordinates; re-export the mesh",
+                name, non_finite, non_finite == 1 ? "vertex has" : "vertices have");
+  }
+  if (m.faces.empty()) {
+    input_error("mesh '{}': the file holds no triangles (empty mesh); re-export the grain's surface", name);
+  }
+  return m;
+}
+
+void write_stl(const TriMesh& mesh, const std::filesystem::path& path) {
+  std::string bytes(84 + 50 * mesh.faces.size(), '\0');
+  const char header[] = "grainlab binary STL";
+  std::memcpy(bytes.data(), header, sizeof(header) - 1);
+  const auto n = static_cast<std::uint32_t>(mesh.faces.size());
+  std::memcpy(bytes.data() + 80, &n, 4);
+  char* p = bytes.data() + 84;
+  for (const Face& f : mesh.faces) {
+    const Vec3 &a = mesh.vertices[f[0]], &b = mesh.vertices[f[1]], &c = mesh.vertices[f[2]];
+    Vec3 normal = (b - a).cross(c - a);
+    const double len = normal.norm();
+    normal = len > 0 ? Vec3(normal / len) : Vec3::Zero();
+    float rec[12];
+    for (int k = 0; k < 3; ++k) {
+      rec[k] = static_cast<float>(normal[k]);
+      rec[3 + k] = static_cast<float>(a[k]);
+      rec[6 + k] = static_cast<float>(b[k]);
+      rec[9 + k] = static_cast<float>(c[k]);
+    }
+    std::memcpy(p, rec, 48);  // the 2-byte attribute stays zero
+    p += 50;
+  }
+  write_atomically(path, bytes);
+}
+
+void write_obj(const TriMesh& mesh, const std::filesystem::path& path) {
+  fmt::memory_buffer buf;
+  fmt::format_to(std::back_inserter(buf), "# grainlab mesh: {} vertices, {} faces\n",
+                 mesh.vertices.size(), mesh.faces.size());
+  for (const Vec3& v : mesh.vertices) {
+    fmt::format_to(std::back_inserter(buf), "v {:.17g} {:.17g} {:.17g}\n", v.x(), v.y(), v.z());
+  }
+  for (const Face& f : mesh.faces) {
+    fmt::format_to(std::back_inserter(buf), "f {} {} {}\n", f[0] + 1, f[1] + 1, f[2] + 1);
+  }
+  write_atomically(path, std::string(buf.data(), buf.size()));
+}
+
+}  // namespace grainlab

@@ -1,0 +1,174 @@
+// Mesh files: round trips, hand-written files, and refused files.
+#include "geometry/mesh_io.h"
+
+#include "geometry/mass_properties.h"
+#include "geometry/primitives.h"
+#include "test_helpers.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+namespace grainlab {
+namespace {
+
+const std::filesystem::path kMeshes = std::filesystem::path(GRAINLAB_TEST_DATA) / "meshes";
+
+// An icosphere with coordinates already in single precision, as files store them.
+TriMesh float_icosphere() {
+  TriMesh m = icosphere(0.8e-3, 3);
+  // Through a volatile float: GCC 12.2's SLP vectoriser (-O2 and up) drops a
+  // double -> float -> double round trip done in registers on adjacent elements.
+  for (Vec3& v : m.vertices) {
+    for (int k = 0; k < 3; ++k) {
+      volatile float f = static_cast<float>(v[k]);
+      v[k] = f;
+    }
+  }
+  return m;
+}
+
+// An icosphere of radius 1000 with integer coordinates: exact in any text format
+// and in single precision (assimp's text parsers can be 1 float ulp off otherwise).
+TriMesh integer_icosphere() {
+  TriMesh m = icosphere(1000.0, 3);
+  for (Vec3& v : m.vertices) v = v.array().round().matrix();
+  return m;
+}
+
+void write_text(const std::filesystem::path& p, const std::string& text) {
+  std::ofstream(p, std::ios::binary) << text;
+}
+
+TEST(MeshIo, BinaryStlRoundTrip) {
+  test::TempDir dir;
+  const TriMesh m = float_icosphere();
+  write_stl(m, dir / "sphere.stl");
+  const TriMesh r = read_mesh(dir / "sphere.stl");
+  EXPECT_EQ(r.vertices.size(), m.vertices.size());
+  EXPECT_EQ(r.faces.size(), m.faces.size());
+  EXPECT_NEAR(mass_properties(r).volume / mass_properties(m).volume, 1.0, 1e-12);
+  EXPECT_EQ(std::filesystem::file_size(dir / "sphere.stl"), 84 + 50 * m.faces.size());
+  // Only the final file is left: the temporary was renamed.
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir.path), {}), 1);
+}
+
+TEST(MeshIo, ObjRoundTrip) {
+  test::TempDir dir;
+  const TriMesh m = integer_icosphere();
+  write_obj(m, dir / "sphere.obj");
+  const TriMesh r = read_mesh(dir / "sphere.obj");
+  EXPECT_EQ(r.vertices.size(), m.vertices.size());
+  EXPECT_EQ(r.faces.size(), m.faces.size());
+  EXPECT_NEAR(mass_properties(r).volume / mass_properties(m).volume, 1.0, 1e-12);
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir.path), {}), 1);
+  // Arbitrary doubles come back to single precision.
+  const TriMesh g = icosphere(0.8e-3, 3);
+  write_obj(g, dir / "sphere.obj");  // overwrites through the temporary
+  const TriMesh rg = read_mesh(dir / "sphere.obj");
+  EXPECT_EQ(rg.vertices.size(), g.vertices.size());
+  EXPECT_NEAR(mass_properties(rg).volume / mass_properties(g).volume, 1.0, 1e-6);
+}
+
+TEST(MeshIo, HandWrittenAsciiStl) {
+  const TriMesh m = read_mesh(kMeshes / "tetra_ascii.stl");
+  EXPECT_EQ(m.vertices.size(), 4u);  // 12 corners merged to 4
+  EXPECT_EQ(m.faces.size(), 4u);
+  EXPECT_NEAR(mass_properties(m).volume, 1.0 / 6.0, 1e-15);
+}
+
+TEST(MeshIo, HandWrittenPlyWithQuads) {
+  const TriMesh m = read_mesh(kMeshes / "cube_quads.ply");
+  EXPECT_EQ(m.vertices.size(), 8u);
+  EXPECT_EQ(m.faces.size(), 12u);  // quads triangulated
+  const MassProperties mp = mass_properties(m);
+  EXPECT_NEAR(mp.volume, 1.0, 1e-15);
+  EXPECT_NEAR((mp.centroid - Vec3::Constant(0.5)).norm(), 0.0, 1e-15);
+}
+
+TEST(MeshIo, AsciiStlWrittenInTheTest) {
+  test::TempDir dir;
+  // An upper-case extension is accepted.
+  write_text(dir / "TRI.STL",
+             "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n"
+             "endloop\nendfacet\nendsolid t\n");
+  const TriMesh m = read_mesh(dir / "TRI.STL");
+  EXPECT_EQ(m.vertices.size(), 3u);
+  EXPECT_EQ(m.faces.size(), 1u);
+  // assimp rejects whitespace before "solid"; the message says what to delete.
+  write_text(dir / "blank.stl",
+             "\n  solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n"
+             "endloop\nendfacet\nendsolid t\n");
+  const std::string msg = test::input_error_of([&] { read_mesh(dir / "blank.stl"); });
+  EXPECT_CONTAINS(msg, "blank.stl");
+  EXPECT_CONTAINS(msg, "3 blank character(s) before 'solid'");
+}
+
+TEST(MeshIo, MissingFile) {
+  const std::string msg = test::input_error_of([] { read_mesh("/nonexistent/grain.stl"); });
+  EXPECT_CONTAINS(msg, "'/nonexistent/grain.stl'");
+  EXPECT_CONTAINS(msg, "file not found");
+}
+
+TEST(MeshIo, UnsupportedExtension) {
+  test::TempDir dir;
+  write_text(dir / "grain.xyz", "0 0 0\n");
+  const std::string msg = test::input_error_of([&] { read_mesh(dir / "grain.xyz"); });
+  EXPECT_CONTAINS(msg, "grain.xyz");
+  EXPECT_CONTAINS(msg, "unsupported file type '.xyz'");
+  EXPECT_CONTAINS(msg, "STL, OBJ or PLY");
+}
+
+TEST(MeshIo, EmptyFiles) {
+  test::TempDir dir;
+  for (const char* name : {"empty.stl", "empty.obj", "empty.ply"}) {
+    write_text(dir / name, "");
+    const std::string msg = test::input_error_of([&] { read_mesh(dir / name); });
+    EXPECT_CONTAINS(msg, name);
+    EXPECT_CONTAINS(msg, "empty");
+  }
+  // An OBJ with vertices but no faces is an empty mesh too.
+  write_text(dir / "points.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n");
+  const std::string msg = test::input_error_of([&] { read_mesh(dir / "points.obj"); });
+  EXPECT_CONTAINS(msg, "points.obj");
+  EXPECT_CONTAINS(msg, "no triangles");
+}
+
+TEST(MeshIo, TruncatedBinaryStl) {
+  test::TempDir dir;
+  const TriMesh m = float_icosphere();  // 1280 triangles
+  const auto path = dir / "grain.stl";
+  write_stl(m, path);
+  std::filesystem::resize_file(path, 84 + 50 * 1000 + 17);
+  const std::string msg = test::input_error_of([&] { read_mesh(path); });
+  EXPECT_CONTAINS(msg, "grain.stl");
+  EXPECT_CONTAINS(msg, "binary STL is truncated (header says 1280 triangles, file holds 1000)");
+  EXPECT_CONTAINS(msg, "re-export");
+  std::filesystem::resize_file(path, 40);
+  EXPECT_CONTAINS(test::input_error_of([&] { read_mesh(path); }), "too short for a binary STL");
+}
+
+TEST(MeshIo, NonFiniteCoordinates) {
+  test::TempDir dir;
+  write_text(dir / "nan.obj", "v 0 0 0\nv 1 0 0\nv 0 nan 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n");
+  const std::string msg = test::input_error_of([&] { read_mesh(dir / "nan.obj"); });
+  EXPECT_CONTAINS(msg, "nan.obj");
+  EXPECT_CONTAINS(msg, "1 vertex has non-finite");
+}
+
+TEST(MeshIo, GarbageRefused) {
+  test::TempDir dir;
+  write_text(dir / "junk.ply", "this is not a ply file\n");
+  const std::string msg = test::input_error_of([&] { read_mesh(dir / "junk.ply"); });
+  EXPECT_CONTAINS(msg, "junk.ply");
+  EXPECT_CONTAINS(msg, "cannot be parsed");
+}
+
+TEST(MeshIo, UnwritablePath) {
+  const std::string msg =
+      test::input_error_of([] { write_stl(box_mesh(1, 1, 1), "/nonexistent/dir/out.stl"); });
+  EXPECT_CONTAINS(msg, "cannot write '/nonexistent/dir/out.stl'");
+}
+
+}  // namespace
+}  // namespace grainlab
