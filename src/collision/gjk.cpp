@@ -3,6 +3,7 @@
 #include "collision/gjk.h"
 
 #include "collision/narrowphase.h"
+#include "collision/penetration.h"
 
 #include <algorithm>
 
@@ -253,10 +254,16 @@ bool Epa::expand(int closest, int wi) {
 
 }  // namespace gjk_detail
 
-ContactResult collide_convex(const PolytopeShape& a, const PolytopeShape& b, Vec3& dir) {
+// Polytope pairs take the translated-GJK path (penetration.h) when `dir` is
+// warm (last step's normal of this pair) and it concludes; GJK/EPA otherwise.
+ContactResult collide_convex(const PolytopeShape& a, const PolytopeShape& b, Vec3& dir, bool warm) {
+  ContactResult r;
+  if (warm && warm_penetration(a, b, dir, r)) return r;
   return gjk_epa(a, b, dir);
 }
-ContactResult collide_convex(const BoxShape& a, const PolytopeShape& b, Vec3& dir) {
+ContactResult collide_convex(const BoxShape& a, const PolytopeShape& b, Vec3& dir, bool warm) {
+  ContactResult r;
+  if (warm && warm_penetration(a, b, dir, r)) return r;
   return gjk_epa(a, b, dir);
 }
 ContactResult collide_convex(const BoxShape& a, const SphereShape& b, Vec3& dir) {

@@ -19,9 +19,12 @@ ContactResult collide(const PlaneShape& a, const PolytopeShape& b);
 // General convex pair by GJK (separation) and EPA (penetration).
 // `dir` is the warm-start search direction (e.g. last step's normal for this
 // pair, any non-zero vector the first time); it is updated for the next call.
-ContactResult collide_convex(const PolytopeShape& a, const PolytopeShape& b, Vec3& dir);
+// `warm` says dir is this pair's normal from the previous step: then a
+// shallow penetration is found by the local translated-GJK iteration
+// (penetration.h), several times cheaper than EPA; cold calls use EPA.
+ContactResult collide_convex(const PolytopeShape& a, const PolytopeShape& b, Vec3& dir, bool warm = false);
 ContactResult collide_convex(const SphereShape& a, const PolytopeShape& b, Vec3& dir);
-ContactResult collide_convex(const BoxShape& a, const PolytopeShape& b, Vec3& dir);
+ContactResult collide_convex(const BoxShape& a, const PolytopeShape& b, Vec3& dir, bool warm = false);
 ContactResult collide_convex(const BoxShape& a, const SphereShape& b, Vec3& dir);
 
 }  // namespace grainlab

@@ -33,6 +33,7 @@ struct PairContact {
   Vec3 dir = Vec3::UnitX();  // warm start for GJK: last normal
   Vec3 xi = Vec3::Zero();    // tangential spring (m)
   Index hint_a = 0, hint_b = 0;  // support-vertex hints
+  bool warm = false;             // dir and hints come from a previous step
   // Results of the current step:
   ContactResult geo;
   Vec3 force = Vec3::Zero();  // force on b at geo.point (N); on a it is -force

@@ -19,7 +19,7 @@ TimeStepEstimate critical_time_step(const Model& model, double fraction) {
     for (std::size_t other = 0; other < model.materials.size(); ++other) {
       const PairCoefficients& p = model.pair(b.material, static_cast<Index>(other));
       // Grain-grain with an equal grain (R* = R/2, m* = m_c/2) and grain-wall (R* = R, m* = m_c).
-      for (const auto [r_eff, m_eff] : {std::pair{0.5 * b.radius, 0.5 * m_c}, std::pair{b.radius, m_c}}) {
+      for (const auto& [r_eff, m_eff] : {std::pair{0.5 * b.radius, 0.5 * m_c}, std::pair{b.radius, m_c}}) {
         const bool wall = r_eff == b.radius;
         // A contact that cannot happen sets no limit.
         if (wall ? model.walls.empty() : model.bodies.size() < 2) continue;

@@ -221,7 +221,10 @@ ContactResult World::collide_pair(PairContact& pc) const {
   const BodyState& sb = state.bodies[pc.b];
   // Bounding spheres apart: no contact, no GJK.
   const double reach = ma.bounding_radius + mb.bounding_radius;
-  if ((sb.x - sa.x).squaredNorm() > reach * reach) return {};
+  if ((sb.x - sa.x).squaredNorm() > reach * reach) {
+    pc.warm = false;  // the last normal will be stale when they meet
+    return {};
+  }
   const Shape& sha = model.shapes[ma.shape];
   const Shape& shb = model.shapes[mb.shape];
   const bool poly_a = sha.kind == Shape::Kind::Polytope, poly_b = shb.kind == Shape::Kind::Polytope;
@@ -230,9 +233,10 @@ ContactResult World::collide_pair(PairContact& pc) const {
   if (poly_a && poly_b) {
     PolytopeShape a{&sha.hull, rot_[pc.a], sa.x, ma.scale, pc.hint_a};
     PolytopeShape b{&shb.hull, rot_[pc.b], sb.x, mb.scale, pc.hint_b};
-    ContactResult r = collide_convex(a, b, pc.dir);
+    ContactResult r = collide_convex(a, b, pc.dir, pc.warm);
     pc.hint_a = a.hint;
     pc.hint_b = b.hint;
+    pc.warm = true;
     return r;
   }
   if (poly_b) {  // sphere a, polytope b
@@ -269,8 +273,9 @@ ContactResult World::collide_wall(PairContact& pc) const {
   const BoxShape box{ws.q.toRotationMatrix(), ws.x, wm.half};
   if (!poly) return collide_convex(box, SphereShape{sb.x, mb.radius}, pc.dir);
   PolytopeShape b{&shb.hull, rot_[pc.b], sb.x, mb.scale, pc.hint_b};
-  ContactResult r = collide_convex(box, b, pc.dir);
+  ContactResult r = collide_convex(box, b, pc.dir, pc.warm);
   pc.hint_b = b.hint;
+  pc.warm = true;
   return r;
 }
 

@@ -1,0 +1,90 @@
+// Warm-started penetration depth by translated GJK: the fast path for DEM
+// contacts, whose overlaps are tiny and whose normal changes little per step.
+//
+// The penetration depth of A and B is PD = min over unit u of h_C(u), with
+// C = A - B and h_C(u) = h_A(u) + h_B(-u) the support overlap along u (every
+// u gives an upper bound: moving B by h_C(u) u separates the shapes).
+// Given last step's normal n, translate B out along n by slightly more than
+// h_C(n): the shapes are then separated, and GJK gives their distance s,
+// closest points p_A, p_B' and normal n'. For C convex, if n is the optimal
+// direction the closest point of the translated C to the origin is exactly
+// the point where the origin's ray leaves C, so n' = n and p_A, p_B = p_B' - t
+// are the deepest points (the witness points EPA would give). If n is slightly
+// off, n' is the normal at a nearby boundary point: iterate n <- n' (a fixed
+// point iteration on the boundary of C, exact once the optimal face of a
+// polytope is found, usually in one or two steps). The smallest h_C(u) seen
+// is returned with its direction, so the result has EPA's semantics
+// (`gjk.h`), and every GJK call here is the cheap separated case.
+//
+// The iteration is local: from a poor starting direction it can settle on a
+// locally optimal face. Callers use it only with a warm direction (the pair's
+// normal from the previous step, separated or touching); it reports failure
+// (the caller falls back to EPA) if the shapes are apart along the direction
+// or a later one, or if the depth found exceeds 5 % of the shapes' size.
+#pragma once
+
+#include "collision/gjk.h"
+#include "collision/shapes.h"
+
+#include <limits>
+
+namespace grainlab {
+
+// A PolytopeShape moved by t, sharing the original's hill-climbing hint.
+struct ShiftedPolytope {
+  const PolytopeShape& shape;
+  Vec3 t;
+  Index& hint;
+  Vec3 support(const Vec3& d) const {
+    shape.hint = hint;
+    const Vec3 p = shape.support(d) + t;
+    hint = shape.hint;
+    return p;
+  }
+  Vec3 center() const { return shape.center() + t; }
+};
+
+// Penetration of A and polytope B by translated GJK, starting from `dir` (from A
+// to B). Returns false, leaving `out` unset, if A and B do not overlap along
+// dir or the iteration cannot conclude; the caller then runs gjk_epa.
+template <class ShapeA>
+bool warm_penetration(const ShapeA& a, const PolytopeShape& b, Vec3& dir, ContactResult& out) {
+  const double len = dir.norm();
+  if (!(len > 0) || !std::isfinite(len)) return false;
+  Vec3 n = dir / len;
+  Vec3 sa = a.support(n), sb = b.support(-n);
+  double h = n.dot(sa - sb);
+  if (!(h > 0)) return false;
+  const double size = (sa - a.center()).norm() + (sb - b.center()).norm();
+  double best = std::numeric_limits<double>::infinity();
+  Vec3 best_n = n, best_point = Vec3::Zero();
+  for (int iter = 0; iter < 6; ++iter) {
+    const Vec3 t = (h + 1e-3 * h + 1e-9 * size) * n;
+    const ShiftedPolytope moved{b, t, b.hint};
+    Vec3 d = n;
+    const ContactResult g = gjk_epa(a, moved, d);
+    if (g.touching) return false;  // rounding: let EPA decide
+    const Vec3 n2 = g.normal;
+    const double h2 = n2.dot(a.support(n2) - b.support(-n2));
+    if (h2 < best) {  // witness points: p_A and p_B' - t
+      best = h2;
+      best_n = n2;
+      best_point = g.point - 0.5 * t;
+    }
+    if (!(h2 > 0)) return false;  // a separating direction: GJK measures the gap
+    if ((n2 - n).squaredNorm() < 1e-20) break;
+    n = n2;
+    h = h2;
+  }
+  // Only shallow contacts are this routine's business: a deep answer means the
+  // start direction was poor (the local iteration may have found the wrong face).
+  if (!std::isfinite(best) || best > 0.05 * size) return false;
+  out.touching = best > 0;
+  out.depth = best;
+  out.normal = best_n;
+  out.point = best_point;
+  dir = best_n;
+  return true;
+}
+
+}  // namespace grainlab

@@ -1,0 +1,110 @@
+// Warm-started translated-GJK penetration against EPA on random hull pairs.
+#include "collision/penetration.h"
+#include "core/rng.h"
+#include "test_shapes.h"
+
+#include <gtest/gtest.h>
+
+using namespace grainlab;
+
+namespace {
+
+struct Pair {
+  grainlab::testing::TestHull ha, hb;
+  PolytopeShape a, b;
+};
+
+// Two random blob hulls of size ~1 mm near x = 1 cm, B moved so that the
+// support overlap along u is `delta`.
+Pair make_pair(Rng& rng, int nverts, double delta, Vec3& u) {
+  Pair p;
+  const double L = 1e-3;
+  p.ha = grainlab::testing::random_blob_hull(rng, nverts);
+  p.hb = grainlab::testing::random_blob_hull(rng, nverts);
+  p.a = PolytopeShape{&p.ha.poly, rng.rotation().toRotationMatrix(), Vec3(1e-2, 0, 0), L, 0};
+  p.b = PolytopeShape{&p.hb.poly, rng.rotation().toRotationMatrix(), Vec3::Zero(), L, 0};
+  u = rng.unit_vector();
+  const auto overlap = [&](const Vec3& n) {
+    return n.dot(p.a.support(n) - p.b.support(-n));
+  };
+  p.b.pos = p.a.pos;  // then h_C(u) = overlap(u): move B out along u to leave `delta`
+  p.b.pos = p.a.pos + (overlap(u) - delta) * u;
+  return p;
+}
+
+// Largest signed distance of x outside the placed hull's face planes (<= 0 inside).
+double outside(const grainlab::testing::TestHull& h, const PolytopeShape& s, const Vec3& x) {
+  const std::vector<Vec3> v = grainlab::testing::world_vertices(s);
+  double m = -1e300;
+  for (const auto& f : h.faces) {
+    const Vec3 n = (v[f[1]] - v[f[0]]).cross(v[f[2]] - v[f[0]]).normalized();
+    m = std::max(m, n.dot(x - v[f[0]]));
+  }
+  return m;
+}
+
+double overlap_along(const Pair& p, const Vec3& n) { return n.dot(p.a.support(n) - p.b.support(-n)); }
+
+}  // namespace
+
+TEST(WarmPenetration, MatchesEpaFromANearbyDirection) {
+  Rng rng(5);
+  int used = 0, touching = 0;
+  for (int t = 0; t < 4000; ++t) {
+    const int nverts = t % 2 ? 400 : 40;
+    Vec3 u;
+    Pair p = make_pair(rng, nverts, rng.uniform(2e-6, 3e-5), u);  // DEM-size overlaps
+    Vec3 dir_epa = u;
+    const ContactResult epa = gjk_epa(p.a, p.b, dir_epa);
+    if (!epa.touching) continue;
+    ++touching;
+    // Start a little off the optimal normal, as last step's normal would be.
+    Vec3 dir = (epa.normal + rng.uniform(0, 0.03) * rng.unit_vector()).normalized();
+    ContactResult warm;
+    if (!warm_penetration(p.a, p.b, dir, warm)) continue;
+    ++used;
+    const double tol = 1e-9 * 1e-3;
+    ASSERT_TRUE(warm.touching) << "case " << t;
+    EXPECT_NEAR(warm.depth, epa.depth, tol) << "case " << t;
+    EXPECT_NEAR(overlap_along(p, warm.normal), warm.depth, tol) << "the normal must achieve the depth";
+    // The point lies between the surfaces (on a flat patch it may differ from EPA's).
+    EXPECT_LE(outside(p.ha, p.a, warm.point), warm.depth + tol) << "case " << t;
+    EXPECT_LE(outside(p.hb, p.b, warm.point), warm.depth + tol) << "case " << t;
+    EXPECT_EQ(dir, warm.normal);
+  }
+  EXPECT_GT(touching, 100);
+  EXPECT_GT(used, 0.95 * touching) << "the fast path should conclude for nearly every warm case";
+}
+
+TEST(WarmPenetration, TracksAnApproachingPairStepByStep) {
+  // B creeps into A as in a DEM run; the pair's direction is carried from step
+  // to step (separated GJK normals first, then the penetration normals).
+  Rng rng(9);
+  for (int run = 0; run < 40; ++run) {
+    Vec3 u;
+    Pair p = make_pair(rng, 300, -2e-6, u);  // starts 2 um apart
+    Vec3 dir = u;
+    const Vec3 step = -1e-7 * u + 2e-8 * rng.unit_vector();
+    for (int i = 0; i < 80; ++i) {
+      p.b.pos += step;
+      ContactResult warm;
+      Vec3 d_epa = dir;
+      const ContactResult epa = gjk_epa(p.a, p.b, d_epa);
+      if (warm_penetration(p.a, p.b, dir, warm)) {
+        ASSERT_NEAR(warm.depth, epa.depth, 1e-12) << "run " << run << " step " << i;
+      } else {
+        ASSERT_FALSE(epa.touching && overlap_along(p, dir) > 0);
+        dir = d_epa;  // what the narrowphase does: GJK's answer seeds the next step
+      }
+    }
+  }
+}
+
+TEST(WarmPenetration, RefusesADirectionAlongWhichTheShapesAreApart) {
+  Rng rng(3);
+  Vec3 u;
+  Pair p = make_pair(rng, 100, 1e-6, u);
+  Vec3 dir = -u;  // the wrong way: along -u the hulls do not overlap
+  ContactResult r;
+  EXPECT_FALSE(warm_penetration(p.a, p.b, dir, r));
+}
