@@ -65,11 +65,12 @@ ContactResult collide(const PlaneShape& a, const PolytopeShape& b) {
   queue.push_back(deepest);
   stamp[deepest] = generation;
   Vec3 wsum = Vec3::Zero();
-  double wtot = 0;
+  double wtot = 0, wsq = 0;
   for (std::size_t q = 0; q < queue.size(); ++q) {
     const Index v = queue[q];
     const double w = -(h0 + poly.vertex(v).dot(nl));  // depth of v below the plane
     wsum += w * poly.vertex(v);
+    wsq += w * poly.vertex(v).squaredNorm();
     wtot += w;
     for (const Index* it = poly.neighbours_begin(v); it != poly.neighbours_end(v); ++it) {
       if (stamp[*it] == generation) continue;
@@ -77,7 +78,10 @@ ContactResult collide(const PlaneShape& a, const PolytopeShape& b) {
       if (h0 + poly.vertex(*it).dot(nl) < 0) queue.push_back(*it);
     }
   }
-  const Vec3 c = b.pos + b.scale * (b.rot * (wsum / wtot));
+  const Vec3 mean = wsum / wtot;
+  const Vec3 c = b.pos + b.scale * (b.rot * mean);
+  // Weighted variance about the centroid: E|v|^2 - |E v|^2, in world units.
+  r.spread = std::max(0.0, wsq / wtot - mean.squaredNorm()) * b.scale * b.scale;
   // Move the centroid along the normal to halfway between plane and deepest point.
   const double hc = (c - a.point).dot(a.normal);
   r.point = c - (hc + 0.5 * r.depth) * a.normal;

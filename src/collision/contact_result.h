@@ -10,6 +10,10 @@ struct ContactResult {
   double depth = 0;       // overlap if touching, else minus the separation distance (m)
   Vec3 normal = Vec3::UnitZ();  // unit, points from A towards B: moving B by depth*normal separates them
   Vec3 point = Vec3::Zero();    // contact point, midway between the two surfaces (m)
+  // Spread of an extended contact patch: the depth-weighted mean squared
+  // distance of the penetrating vertices from `point` (m^2); 0 for a point
+  // contact. Lets the contact law damp rocking of a face lying on a wall.
+  double spread = 0;
 };
 
 }  // namespace grainlab

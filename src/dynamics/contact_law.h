@@ -54,8 +54,9 @@ struct ContactKinematics {
 // capped and xi set back to the value that gives exactly the capped force.
 template <typename Law>
 Vec3 contact_force(const PairCoefficients& p, const ContactKinematics& c, double dt, Vec3& xi,
-                   double* normal_force_out = nullptr) {
+                   double* normal_force_out = nullptr, LawCoefficients* coefficients_out = nullptr) {
   const LawCoefficients k = Law::at(p, c.delta, c.r_eff, c.m_eff);
+  if (coefficients_out) *coefficients_out = k;
   const double v_n = c.v_rel.dot(c.normal);
   const Vec3 v_t = c.v_rel - v_n * c.normal;
   const double f_n = std::max(0.0, k.k_n * c.delta - k.c_n * v_n);
@@ -78,6 +79,16 @@ Vec3 contact_force(const PairCoefficients& p, const ContactKinematics& c, double
   }
   if (normal_force_out) *normal_force_out = f_n;
   return f_n * c.normal + f_t;
+}
+
+// Damping torque on b of an extended patch (a face lying on a wall).
+// The normal damping -C_n v_n acts on every point of the patch; with v_n
+// varying as (w x s).n over patch offsets s, the part beyond the force at the
+// centroid is a torque -C_n D w with D = sum_i w_i (s_i x n)(s_i x n)^T, which
+// for an isotropic patch of spread s2 = sum_i w_i |s_i|^2 is (s2/2)(I - n n^T).
+// Without it a single contact point leaves the rocking of a flat face undamped.
+inline Vec3 patch_damping_torque(double c_n, double spread, const Vec3& normal, const Vec3& w_rel) {
+  return -c_n * 0.5 * spread * (w_rel - w_rel.dot(normal) * normal);
 }
 
 }  // namespace grainlab

@@ -37,6 +37,7 @@ struct PairContact {
   // Results of the current step:
   ContactResult geo;
   Vec3 force = Vec3::Zero();  // force on b at geo.point (N); on a it is -force
+  Vec3 torque = Vec3::Zero(); // extra torque on b (patch damping, N m); on a it is -torque
   double normal_force = 0;    // N
 
   std::uint64_t key() const {

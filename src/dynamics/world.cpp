@@ -320,6 +320,7 @@ void World::forces_with(double dt) {
     if (!pc.geo.touching) {
       pc.xi.setZero();
       pc.force.setZero();
+      pc.torque.setZero();
       pc.normal_force = 0;
       return;
     }
@@ -333,8 +334,10 @@ void World::forces_with(double dt) {
     c.v_rel = (sb.v + sb.w.cross(p - sb.x)) - ws.v;
     c.m_eff = mb.mass;
     c.r_eff = mb.radius;
+    LawCoefficients law;
     pc.force = contact_force<Law>(model.pair(model.walls[pc.a].material, mb.material), c, dt, pc.xi,
-                                  &pc.normal_force);
+                                  &pc.normal_force, &law);
+    pc.torque = patch_damping_torque(law.c_n, pc.geo.spread, c.normal, sb.w);
   };
   parallel_for(static_cast<std::ptrdiff_t>(state.wall_pairs.size()), wall_pair, 128);
 
@@ -355,7 +358,7 @@ void World::forces_with(double dt) {
   for (const PairContact& pc : state.wall_pairs) {
     if (!pc.geo.touching) continue;
     force_[pc.b] += pc.force;
-    torque_[pc.b] += (pc.geo.point - state.bodies[pc.b].x).cross(pc.force);
+    torque_[pc.b] += (pc.geo.point - state.bodies[pc.b].x).cross(pc.force) + pc.torque;
     state.walls[pc.a].force -= pc.force;
   }
 }

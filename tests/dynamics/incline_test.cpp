@@ -66,7 +66,7 @@ Slide slide_block(double theta, double mu) {
 
 TEST(Incline, SticksBelowFrictionAngle) {
   const double mu = 0.5;
-  for (double theta_deg : {10.0, 20.0, 25.0}) {  // atan(0.5) = 26.6 deg
+  for (double theta_deg : {10.0, 20.0, 25.0, 26.0}) {  // atan(0.5) = 26.57 deg
     const Slide r = slide_block(theta_deg * M_PI / 180, mu);
     EXPECT_LT(std::abs(r.displacement), 1e-6) << theta_deg << " deg: the block crept";
   }

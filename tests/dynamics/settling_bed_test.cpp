@@ -16,6 +16,7 @@ SettlingBedSpec test_bed() {
   spec.grains = 240;
   spec.hull_points = 102;  // 200-face hulls keep the test quick
   spec.seed = 11;
+  spec.material.youngs_modulus = 1e7;
   return spec;
 }
 
@@ -27,17 +28,19 @@ TEST(SettlingBed, ConvexGrainsComeToRestInsideTheBox) {
   const double dt = 0.2 * w.critical_time_step();
   double worst_overlap = 0;
   double ke_peak = 0, ke = 0;
-  const int steps = 6000;
+  const int steps = static_cast<int>(0.35 / dt);  // 0.35 s: falls of a few grain sizes take ~0.05 s
   for (int i = 0; i < steps; ++i) {
     w.step(dt);
     ke = w.kinetic_energy();
     ke_peak = std::max(ke_peak, ke);
-    if (i > steps / 2) worst_overlap = std::max(worst_overlap, max_relative_overlap(w));
+    // Impact overlaps grow with stiffness and fall speed (Hertz: delta_max ~
+    // v^{4/5}); the promise is about the bed, once the grains have landed.
+    if (w.state.time > 0.15) worst_overlap = std::max(worst_overlap, max_relative_overlap(w));
     ASSERT_TRUE(all_grains_inside(bed)) << "a grain left the box at step " << i;
   }
-  // Potential energy released per grain is about m g r; at rest the kinetic
-  // energy must be a tiny fraction of the peak.
-  EXPECT_LT(ke, 1e-3 * ke_peak);
+  // At rest the kinetic energy is a tiny fraction of its peak during the fall.
+  EXPECT_LT(ke, 1e-4 * ke_peak);
+  // Overlaps in the bed below 1 % of the grain radius.
   EXPECT_LT(worst_overlap, 0.01);
   // Every grain rests on something.
   EXPECT_GT(w.contact_count(), w.model.bodies.size());

@@ -22,6 +22,7 @@ TEST(TimeStep, PaperTable1StepIsRefusedForRealQuartzGrains) {
   const Index mat = w.model.add_material(m);
   const Index s = w.model.add_mesh_shape(icosphere(0.387e-3, 2), "grain");
   w.add_body(s, mat, 1.0, Vec3::Zero());
+  w.add_plane(Vec3(0, 0, -1e-3), Vec3::UnitZ(), mat, "floor");
   try {
     w.step(1e-5);
     FAIL() << "an unstable step was accepted";
@@ -38,11 +39,19 @@ TEST(TimeStep, DensityScalingRaisesTheCriticalStepBySquareRoot) {
   World w;
   const Index s = w.model.add_sphere_shape(1e-3);
   w.add_body(s, 0, 1.0, Vec3::Zero());
-  w.model.finalize();
+  w.add_plane(Vec3(0, 0, -2e-3), Vec3::UnitZ());
   const double before = w.critical_time_step();
   w.model.density_scale = 100;
   w.model.rescale_bodies();
   EXPECT_NEAR(w.critical_time_step() / before, 10.0, 1e-9);
+}
+
+TEST(TimeStep, NoPossibleContactSetsNoLimit) {
+  World w;
+  w.add_body(w.model.add_sphere_shape(1e-3), 0, 1.0, Vec3::Zero());
+  EXPECT_TRUE(std::isinf(w.critical_time_step()));
+  w.add_plane(Vec3(0, 0, -2e-3), Vec3::UnitZ());
+  EXPECT_FALSE(std::isinf(w.critical_time_step()));
 }
 
 TEST(TimeStep, NonPositiveStepIsRefused) {
