@@ -20,7 +20,7 @@ test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) --timeout 600
 
 demo: build
-	$(BUILD)/grainlab demo --out runs/demo
+	$(BUILD)/grainlab demo
 
 bench: build
 	$(BUILD)/bench_scenes

@@ -48,7 +48,7 @@ void run_scene(const char* label, SettlingBedSpec spec, int settle, int steps) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  int grains = 2000, settle = 2000, steps = 200;
+  int grains = 2000, settle = 10000, steps = 200;
   std::string only;
   for (int i = 1; i + 1 < argc; i += 2) {
     if (!std::strcmp(argv[i], "--grains")) grains = std::stoi(argv[i + 1]);

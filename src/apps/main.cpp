@@ -74,9 +74,8 @@ int main(int argc, char** argv) {
   auto* demo = app.add_subcommand("demo", "settle a bed of grains in a box under gravity and print a summary");
   int grains = 400;
   bool spheres = false;
-  double seconds = 0.25;
+  double seconds = 0.4;
   std::uint64_t seed = 1;
-  std::string out = "runs/demo";
   demo->add_option("--grains", grains, "number of grains")->check(CLI::Range(1, 1000000));
   demo->add_flag("--spheres", spheres, "glass beads instead of convex grains");
   demo->add_option("--seconds", seconds, "simulated time (s)")->check(CLI::PositiveNumber);
@@ -84,7 +83,6 @@ int main(int argc, char** argv) {
   demo->add_option("--hull-points", hull_points, "vertices per convex grain hull (about 2n-4 faces)")
       ->check(CLI::Range(8, 100000));
   demo->add_option("--seed", seed, "random seed (same seed, same run)");
-  demo->add_option("--out", out, "output folder (reserved for run files)");
 
   try {
     app.parse(argc, argv);

@@ -289,55 +289,53 @@ void World::narrowphase() {
   profile.pair_tests += static_cast<std::int64_t>(pairs.size() + wp.size());
 }
 
+namespace {
+
+// Evaluates the contact law for one pair whose sides move with relative
+// velocity v_rel at the contact point and relative angular velocity w_rel.
+template <typename Law>
+void evaluate(PairContact& pc, const PairCoefficients& coeffs, const Vec3& v_rel, const Vec3& w_rel,
+              double m_eff, double r_eff, double dt) {
+  const ContactKinematics c{pc.geo.normal, pc.geo.depth, v_rel, m_eff, r_eff};
+  LawCoefficients law;
+  pc.force = contact_force<Law>(coeffs, c, dt, pc.xi, &pc.normal_force, &law);
+  pc.torque = patch_damping_torque(law.c_n, pc.geo.spread, c.normal, w_rel);
+}
+
+// A pair that is not touching carries no force and forgets its spring.
+void release(PairContact& pc) {
+  pc.xi.setZero();
+  pc.force.setZero();
+  pc.torque.setZero();
+  pc.normal_force = 0;
+}
+
+}  // namespace
+
 template <typename Law>
 void World::forces_with(double dt) {
   // Per pair, in parallel: the force on b at the contact point.
   const auto grain_pair = [&](std::ptrdiff_t k) {
     PairContact& pc = state.pairs[k];
-    if (!pc.geo.touching) {
-      pc.xi.setZero();
-      pc.force.setZero();
-      pc.normal_force = 0;
-      return;
-    }
-    const BodyModel& ma = model.bodies[pc.a];
-    const BodyModel& mb = model.bodies[pc.b];
-    const BodyState& sa = state.bodies[pc.a];
-    const BodyState& sb = state.bodies[pc.b];
+    if (!pc.geo.touching) return release(pc);
+    const BodyModel &ma = model.bodies[pc.a], &mb = model.bodies[pc.b];
+    const BodyState &sa = state.bodies[pc.a], &sb = state.bodies[pc.b];
     const Vec3& p = pc.geo.point;
-    ContactKinematics c;
-    c.normal = pc.geo.normal;
-    c.delta = pc.geo.depth;
-    c.v_rel = (sb.v + sb.w.cross(p - sb.x)) - (sa.v + sa.w.cross(p - sa.x));
-    c.m_eff = ma.mass * mb.mass / (ma.mass + mb.mass);
-    c.r_eff = ma.radius * mb.radius / (ma.radius + mb.radius);
-    pc.force = contact_force<Law>(model.pair(ma.material, mb.material), c, dt, pc.xi, &pc.normal_force);
+    evaluate<Law>(pc, model.pair(ma.material, mb.material),
+                  (sb.v + sb.w.cross(p - sb.x)) - (sa.v + sa.w.cross(p - sa.x)), sb.w - sa.w,
+                  ma.mass * mb.mass / (ma.mass + mb.mass), ma.radius * mb.radius / (ma.radius + mb.radius), dt);
   };
   parallel_for(static_cast<std::ptrdiff_t>(state.pairs.size()), grain_pair, 128);
 
+  // Walls: infinite mass and radius, translating at their prescribed velocity.
   const auto wall_pair = [&](std::ptrdiff_t k) {
     PairContact& pc = state.wall_pairs[k];
-    if (!pc.geo.touching) {
-      pc.xi.setZero();
-      pc.force.setZero();
-      pc.torque.setZero();
-      pc.normal_force = 0;
-      return;
-    }
-    const WallState& ws = state.walls[pc.a];
+    if (!pc.geo.touching) return release(pc);
     const BodyModel& mb = model.bodies[pc.b];
     const BodyState& sb = state.bodies[pc.b];
     const Vec3& p = pc.geo.point;
-    ContactKinematics c;
-    c.normal = pc.geo.normal;
-    c.delta = pc.geo.depth;
-    c.v_rel = (sb.v + sb.w.cross(p - sb.x)) - ws.v;
-    c.m_eff = mb.mass;
-    c.r_eff = mb.radius;
-    LawCoefficients law;
-    pc.force = contact_force<Law>(model.pair(model.walls[pc.a].material, mb.material), c, dt, pc.xi,
-                                  &pc.normal_force, &law);
-    pc.torque = patch_damping_torque(law.c_n, pc.geo.spread, c.normal, sb.w);
+    evaluate<Law>(pc, model.pair(model.walls[pc.a].material, mb.material),
+                  (sb.v + sb.w.cross(p - sb.x)) - state.walls[pc.a].v, sb.w, mb.mass, mb.radius, dt);
   };
   parallel_for(static_cast<std::ptrdiff_t>(state.wall_pairs.size()), wall_pair, 128);
 
@@ -352,8 +350,8 @@ void World::forces_with(double dt) {
     if (!pc.geo.touching) continue;
     force_[pc.b] += pc.force;
     force_[pc.a] -= pc.force;
-    torque_[pc.b] += (pc.geo.point - state.bodies[pc.b].x).cross(pc.force);
-    torque_[pc.a] -= (pc.geo.point - state.bodies[pc.a].x).cross(pc.force);
+    torque_[pc.b] += (pc.geo.point - state.bodies[pc.b].x).cross(pc.force) + pc.torque;
+    torque_[pc.a] -= (pc.geo.point - state.bodies[pc.a].x).cross(pc.force) + pc.torque;
   }
   for (const PairContact& pc : state.wall_pairs) {
     if (!pc.geo.touching) continue;

@@ -44,6 +44,11 @@ TEST(SettlingBed, ConvexGrainsComeToRestInsideTheBox) {
   EXPECT_LT(worst_overlap, 0.01);
   // Every grain rests on something.
   EXPECT_GT(w.contact_count(), w.model.bodies.size());
+  // At rest the walls carry the whole weight of the bed.
+  double weight = 0, carried = 0;
+  for (const BodyModel& b : w.model.bodies) weight += b.gravity_mass * 9.81;
+  for (const WallState& ws : w.state.walls) carried -= ws.force.z();
+  EXPECT_NEAR(carried / weight, 1.0, 1e-3);
 }
 
 TEST(SettlingBed, OneAndTwoThreadsGiveIdenticalStates) {
