@@ -53,7 +53,8 @@ struct State {
   std::vector<WallState> walls;
   std::vector<PairContact> pairs;       // grain-grain, sorted by (a, b)
   std::vector<PairContact> wall_pairs;  // wall-grain, sorted by (wall, grain)
-  // Verlet-skin bookkeeping: positions at the last broadphase rebuild.
+  // Verlet-skin bookkeeping: positions at the last broadphase rebuild. Code
+  // that moves grains by hand (not by stepping) sets rebuild_pairs.
   std::vector<Vec3> x_at_rebuild;
   bool rebuild_pairs = true;
 };

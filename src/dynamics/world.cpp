@@ -102,7 +102,8 @@ void World::prepare() {
     for (const BodyModel& b : model.bodies) r_min = std::min(r_min, b.radius);
     skin = std::isfinite(r_min) ? 0.2 * r_min : 1e-3;
   }
-  state.rebuild_pairs = true;
+  // No forced rebuild: a restored State carries its own candidate pairs, and
+  // added bodies make x_at_rebuild the wrong size, which forces one.
   checked_dt_ = -1;
   prepared_ = true;
 }

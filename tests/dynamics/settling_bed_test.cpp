@@ -28,14 +28,16 @@ TEST(SettlingBed, ConvexGrainsComeToRestInsideTheBox) {
   const double dt = 0.2 * w.critical_time_step();
   double worst_overlap = 0;
   double ke_peak = 0, ke = 0;
-  const int steps = static_cast<int>(0.35 / dt);  // 0.35 s: falls of a few grain sizes take ~0.05 s
+  // Falls of a few grain sizes take ~0.05 s; rearrangements and the last
+  // rattlers need ~0.4 s more.
+  const int steps = static_cast<int>(0.5 / dt);
   for (int i = 0; i < steps; ++i) {
     w.step(dt);
     ke = w.kinetic_energy();
     ke_peak = std::max(ke_peak, ke);
     // Impact overlaps grow with stiffness and fall speed (Hertz: delta_max ~
     // v^{4/5}); the promise is about the bed, once the grains have landed.
-    if (w.state.time > 0.15) worst_overlap = std::max(worst_overlap, max_relative_overlap(w));
+    if (w.state.time > 0.2) worst_overlap = std::max(worst_overlap, max_relative_overlap(w));
     ASSERT_TRUE(all_grains_inside(bed)) << "a grain left the box at step " << i;
   }
   // At rest the kinetic energy is a tiny fraction of its peak during the fall.
