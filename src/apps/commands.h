@@ -1,0 +1,16 @@
+// The grainlab subcommands. Each registers itself on the CLI11 app and returns
+// a callback that runs it (exit code), so main() stays a dispatcher.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <functional>
+
+namespace grainlab::apps {
+
+using Command = std::function<int()>;
+
+// `grainlab demo`: the settling-bed demonstration.
+Command add_demo_command(CLI::App& app);
+
+}  // namespace grainlab::apps
