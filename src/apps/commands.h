@@ -13,4 +13,7 @@ using Command = std::function<int()>;
 // `grainlab demo`: the settling-bed demonstration.
 Command add_demo_command(CLI::App& app);
 
+// `grainlab grains generate|stats`: synthetic grain sets and grain shape metrics.
+Command add_grains_command(CLI::App& app);
+
 }  // namespace grainlab::apps

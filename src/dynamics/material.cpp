@@ -31,7 +31,7 @@ const char* contact_law_name(ContactLaw law) {
 
 PairCoefficients mix(const Material& a, const Material& b, ContactLaw law) {
   PairCoefficients p;
-  p.friction = 0.5 * (a.friction + b.friction);
+  p.friction = std::min(a.friction, b.friction);
   if (law == ContactLaw::HertzMaterial) {
     const auto inv_e = [](const Material& m) {
       return (1 - m.poisson_ratio * m.poisson_ratio) / m.youngs_modulus;

@@ -66,7 +66,8 @@ struct PairCoefficients {
   double friction = 0;
 };
 
-// Mixes two materials for the given law (harmonic E*/G*, mean friction,
+// Mixes two materials for the given law (harmonic E*/G*, the smaller friction
+// (the slipperier surface governs: a lubricated wall stays lubricated),
 // mean user coefficients, beta from the mean restitution).
 PairCoefficients mix(const Material& a, const Material& b, ContactLaw law);
 

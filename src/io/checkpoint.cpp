@@ -1,0 +1,262 @@
+// Checkpoint encoding. Every number is written little-endian byte by byte
+// (doubles as their IEEE-754 bits), so files are exact and portable, and
+// struct padding never reaches the file. Payload order:
+//   config_hash u64, time f64, step i64, rebuild_pairs u8,
+//   counts u64: bodies, walls, pairs, wall_pairs, x_at_rebuild, protocol,
+//   bodies   (x, v, w: 3 f64 each; q: x, y, z, w),
+//   walls    (x, q, v, force),
+//   pairs, wall_pairs (a, b i32; dir, xi; hint_a, hint_b i32; warm u8;
+//            geo: touching u8, depth, normal, point, spread; force, torque,
+//            normal_force),
+//   x_at_rebuild (3 f64 each), protocol bytes.
+#include "io/checkpoint.h"
+
+#include "core/error.h"
+#include "io/atomic_file.h"
+#include "io/config.h"
+
+#include <fmt/format.h>
+
+#include <bit>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+namespace grainlab {
+
+// A new field in these structs must be written below (and the version bumped).
+static_assert(sizeof(ContactResult) == 72, "ContactResult changed: update io/checkpoint.cpp and kCheckpointVersion");
+static_assert(sizeof(PairContact) == 200, "PairContact changed: update io/checkpoint.cpp and kCheckpointVersion");
+
+namespace {
+
+constexpr char kMagic[8] = {'G', 'L', 'C', 'K', 'P', 'T', '\r', '\n'};
+constexpr std::size_t kHeaderSize = 8 + 4 + 4 + 8 + 8;
+
+// Appends little-endian values.
+class Writer {
+ public:
+  std::vector<std::uint8_t> bytes;
+
+  void u8(std::uint8_t v) { bytes.push_back(v); }
+  void u32(std::uint32_t v) {
+    for (int i = 0; i < 4; ++i) bytes.push_back(static_cast<std::uint8_t>(v >> (8 * i)));
+  }
+  void u64(std::uint64_t v) {
+    for (int i = 0; i < 8; ++i) bytes.push_back(static_cast<std::uint8_t>(v >> (8 * i)));
+  }
+  void i32(std::int32_t v) { u32(static_cast<std::uint32_t>(v)); }
+  void i64(std::int64_t v) { u64(static_cast<std::uint64_t>(v)); }
+  void f64(double v) { u64(std::bit_cast<std::uint64_t>(v)); }
+  void vec(const Vec3& v) {
+    f64(v.x()), f64(v.y()), f64(v.z());
+  }
+  void quat(const Quat& q) {
+    f64(q.x()), f64(q.y()), f64(q.z()), f64(q.w());
+  }
+};
+
+// Reads little-endian values; any read past the end is a truncated file.
+class Reader {
+ public:
+  Reader(std::span<const std::uint8_t> bytes, const std::string& source) : bytes_(bytes), source_(source) {}
+
+  std::size_t left() const { return bytes_.size() - pos_; }
+  std::uint8_t u8() { return take(1)[0]; }
+  std::uint32_t u32() {
+    const std::uint8_t* p = take(4);
+    std::uint32_t v = 0;
+    for (int i = 0; i < 4; ++i) v |= static_cast<std::uint32_t>(p[i]) << (8 * i);
+    return v;
+  }
+  std::uint64_t u64() {
+    const std::uint8_t* p = take(8);
+    std::uint64_t v = 0;
+    for (int i = 0; i < 8; ++i) v |= static_cast<std::uint64_t>(p[i]) << (8 * i);
+    return v;
+  }
+  std::int32_t i32() { return static_cast<std::int32_t>(u32()); }
+  std::int64_t i64() { return static_cast<std::int64_t>(u64()); }
+  double f64() { return std::bit_cast<double>(u64()); }
+  bool flag() {
+    const std::uint8_t v = u8();
+    if (v > 1) corrupted("a boolean holds a value other than 0 or 1");
+    return v == 1;
+  }
+  Vec3 vec() {
+    Vec3 v;
+    v.x() = f64(), v.y() = f64(), v.z() = f64();
+    return v;
+  }
+  Quat quat() {
+    Quat q;
+    q.x() = f64(), q.y() = f64(), q.z() = f64(), q.w() = f64();
+    return q;
+  }
+  // A count of items of at least `item_size` bytes each, checked against what is left.
+  std::size_t count(std::size_t item_size) {
+    const std::uint64_t n = u64();
+    if (item_size > 0 && n > left() / item_size) corrupted("a count is larger than the file");
+    return static_cast<std::size_t>(n);
+  }
+  [[noreturn]] void corrupted(std::string_view what) const {
+    input_error("checkpoint '{}' is corrupted ({}). Delete it and start the run again without --resume.", source_,
+                what);
+  }
+
+ private:
+  const std::uint8_t* take(std::size_t n) {
+    if (n > left()) corrupted("it ends early");
+    const std::uint8_t* p = bytes_.data() + pos_;
+    pos_ += n;
+    return p;
+  }
+
+  std::span<const std::uint8_t> bytes_;
+  std::size_t pos_ = 0;
+  const std::string& source_;
+};
+
+void write_pair(Writer& w, const PairContact& p) {
+  w.i32(p.a), w.i32(p.b);
+  w.vec(p.dir), w.vec(p.xi);
+  w.i32(p.hint_a), w.i32(p.hint_b);
+  w.u8(p.warm ? 1 : 0);
+  w.u8(p.geo.touching ? 1 : 0);
+  w.f64(p.geo.depth);
+  w.vec(p.geo.normal), w.vec(p.geo.point);
+  w.f64(p.geo.spread);
+  w.vec(p.force), w.vec(p.torque);
+  w.f64(p.normal_force);
+}
+
+PairContact read_pair(Reader& r) {
+  PairContact p;
+  p.a = r.i32(), p.b = r.i32();
+  p.dir = r.vec(), p.xi = r.vec();
+  p.hint_a = r.i32(), p.hint_b = r.i32();
+  p.warm = r.flag();
+  p.geo.touching = r.flag();
+  p.geo.depth = r.f64();
+  p.geo.normal = r.vec(), p.geo.point = r.vec();
+  p.geo.spread = r.f64();
+  p.force = r.vec(), p.torque = r.vec();
+  p.normal_force = r.f64();
+  return p;
+}
+
+constexpr std::size_t kBodyBytes = 13 * 8;
+constexpr std::size_t kWallBytes = 13 * 8;
+constexpr std::size_t kPairBytes = 4 * 4 + 2 + 21 * 8;
+
+}  // namespace
+
+std::uint64_t fnv1a64(std::span<const std::uint8_t> bytes) {
+  std::uint64_t h = 0xcbf29ce484222325ull;
+  for (const std::uint8_t b : bytes) {
+    h ^= b;
+    h *= 0x100000001b3ull;
+  }
+  return h;
+}
+
+std::uint64_t config_hash(const DirectShearSpec& spec) {
+  const std::string text = to_toml(spec);
+  return fnv1a64({reinterpret_cast<const std::uint8_t*>(text.data()), text.size()});
+}
+
+std::vector<std::uint8_t> encode_checkpoint(const State& state, std::span<const std::uint8_t> protocol,
+                                            std::uint64_t config_hash) {
+  Writer p;
+  p.u64(config_hash);
+  p.f64(state.time);
+  p.i64(state.step);
+  p.u8(state.rebuild_pairs ? 1 : 0);
+  p.u64(state.bodies.size()), p.u64(state.walls.size()), p.u64(state.pairs.size());
+  p.u64(state.wall_pairs.size()), p.u64(state.x_at_rebuild.size()), p.u64(protocol.size());
+  for (const BodyState& b : state.bodies) p.vec(b.x), p.vec(b.v), p.vec(b.w), p.quat(b.q);
+  for (const WallState& w : state.walls) p.vec(w.x), p.quat(w.q), p.vec(w.v), p.vec(w.force);
+  for (const PairContact& c : state.pairs) write_pair(p, c);
+  for (const PairContact& c : state.wall_pairs) write_pair(p, c);
+  for (const Vec3& x : state.x_at_rebuild) p.vec(x);
+  p.bytes.insert(p.bytes.end(), protocol.begin(), protocol.end());
+
+  Writer file;
+  file.bytes.assign(std::begin(kMagic), std::end(kMagic));
+  file.u32(kCheckpointVersion);
+  file.u32(0);
+  file.u64(p.bytes.size());
+  file.u64(fnv1a64(p.bytes));
+  file.bytes.insert(file.bytes.end(), p.bytes.begin(), p.bytes.end());
+  return std::move(file.bytes);
+}
+
+Checkpoint decode_checkpoint(std::span<const std::uint8_t> bytes, const std::string& source_name) {
+  if (bytes.size() < 8 || std::memcmp(bytes.data(), kMagic, 8) != 0)
+    input_error("'{}' is not a grainlab checkpoint (its first bytes are not the checkpoint signature). "
+                "Give the checkpoint.bin of a run folder.",
+                source_name);
+  Reader header(bytes.subspan(8), source_name);
+  const std::uint32_t version = header.u32();
+  if (version != kCheckpointVersion)
+    input_error("checkpoint '{}' has format version {}, this grainlab reads version {}. Resume it with the "
+                "grainlab that wrote it, or start the run again without --resume.",
+                source_name, version, kCheckpointVersion);
+  header.u32();  // reserved
+  const std::uint64_t size = header.u64();
+  const std::uint64_t checksum = header.u64();
+  if (bytes.size() - kHeaderSize != size)
+    input_error("checkpoint '{}' is truncated or damaged: its header announces {} bytes of data, the file holds "
+                "{}. Delete it and start the run again without --resume.",
+                source_name, size, bytes.size() - kHeaderSize);
+  const std::span<const std::uint8_t> payload = bytes.subspan(kHeaderSize);
+  if (fnv1a64(payload) != checksum)
+    input_error("checkpoint '{}' is corrupted (checksum mismatch). Delete it and start the run again without "
+                "--resume.",
+                source_name);
+
+  Reader r(payload, source_name);
+  Checkpoint c;
+  c.config_hash = r.u64();
+  State& s = c.state;
+  s.time = r.f64();
+  s.step = r.i64();
+  s.rebuild_pairs = r.flag();
+  const std::size_t n_bodies = r.count(kBodyBytes), n_walls = r.count(kWallBytes);
+  const std::size_t n_pairs = r.count(kPairBytes), n_wall_pairs = r.count(kPairBytes);
+  const std::size_t n_rebuild = r.count(24), n_protocol = r.count(1);
+  s.bodies.resize(n_bodies);
+  for (BodyState& b : s.bodies) b.x = r.vec(), b.v = r.vec(), b.w = r.vec(), b.q = r.quat();
+  s.walls.resize(n_walls);
+  for (WallState& w : s.walls) w.x = r.vec(), w.q = r.quat(), w.v = r.vec(), w.force = r.vec();
+  s.pairs.reserve(n_pairs);
+  for (std::size_t i = 0; i < n_pairs; ++i) s.pairs.push_back(read_pair(r));
+  s.wall_pairs.reserve(n_wall_pairs);
+  for (std::size_t i = 0; i < n_wall_pairs; ++i) s.wall_pairs.push_back(read_pair(r));
+  s.x_at_rebuild.resize(n_rebuild);
+  for (Vec3& x : s.x_at_rebuild) x = r.vec();
+  c.protocol.resize(n_protocol);
+  for (std::uint8_t& b : c.protocol) b = r.u8();
+  if (r.left() != 0) r.corrupted("bytes left over after the last field");
+  return c;
+}
+
+void save_checkpoint(const std::filesystem::path& path, const State& state, std::span<const std::uint8_t> protocol,
+                     std::uint64_t config_hash) {
+  const std::vector<std::uint8_t> bytes = encode_checkpoint(state, protocol, config_hash);
+  write_file_atomically(path, {reinterpret_cast<const char*>(bytes.data()), bytes.size()});
+}
+
+Checkpoint load_checkpoint(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in)
+    input_error("cannot open checkpoint '{}': it does not exist or is not readable. A run writes checkpoint.bin "
+                "into its output folder; run without --resume to start afresh.",
+                path.string());
+  const std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (in.bad()) input_error("checkpoint '{}': read error", path.string());
+  return decode_checkpoint(bytes, path.string());
+}
+
+}  // namespace grainlab

@@ -1,0 +1,52 @@
+// Checkpoints: the whole changing State of a run (poses, velocities, walls,
+// every contact's history, the Verlet bookkeeping), the lab protocol's own
+// bytes (its phase, controller state), and the hash of the config that made
+// it. Binary, little-endian, exact (raw IEEE bits), written atomically.
+//
+// Layout: magic "GLCKPT\r\n" (8 bytes), format version (u32), reserved (u32),
+// payload size (u64), FNV-1a 64 checksum of the payload (u64), payload. The
+// payload is the config hash, the State and the protocol bytes; see
+// checkpoint.cpp for the field order.
+#pragma once
+
+#include "dynamics/state.h"
+#include "lab/direct_shear_spec.h"
+
+#include <cstdint>
+#include <filesystem>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace grainlab {
+
+// What a checkpoint file holds.
+struct Checkpoint {
+  State state;
+  std::vector<std::uint8_t> protocol;  // opaque bytes of the lab protocol
+  std::uint64_t config_hash = 0;       // config_hash() of the run's spec
+};
+
+// Current checkpoint format version; files of another version are refused.
+inline constexpr std::uint32_t kCheckpointVersion = 1;
+
+// Writes a checkpoint atomically (RunError on failure).
+void save_checkpoint(const std::filesystem::path& path, const State& state, std::span<const std::uint8_t> protocol,
+                     std::uint64_t config_hash);
+
+// Reads a checkpoint; throws InputError for a missing, truncated, corrupted or wrong-version file.
+Checkpoint load_checkpoint(const std::filesystem::path& path);
+
+// The checkpoint file's bytes (save_checkpoint writes exactly these).
+std::vector<std::uint8_t> encode_checkpoint(const State& state, std::span<const std::uint8_t> protocol,
+                                            std::uint64_t config_hash);
+// Decodes checkpoint bytes; source_name is used in messages.
+Checkpoint decode_checkpoint(std::span<const std::uint8_t> bytes, const std::string& source_name);
+
+// FNV-1a 64-bit hash of bytes.
+std::uint64_t fnv1a64(std::span<const std::uint8_t> bytes);
+// Hash of to_toml(spec): a resumed run checks it against the checkpoint's.
+std::uint64_t config_hash(const DirectShearSpec& spec);
+
+}  // namespace grainlab

@@ -1,0 +1,567 @@
+// Config parsing with toml++ (compiled library, exceptions on): syntax errors
+// come from toml::parse_error with a source position; keys and values carry
+// node.source() for their line. Parsing walks the file against the key list
+// of spec_fields.h, so unknown tables and keys are found with a suggestion
+// (closest valid name by edit distance), values are checked for type, the
+// sand preset goes first, and validate() checks every value for sense.
+#include "io/config.h"
+
+#include "core/error.h"
+#include "io/spec_fields.h"
+#include "lab/sand_presets.h"
+
+#include <fmt/format.h>
+#include <toml++/toml.h>
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <optional>
+#include <sstream>
+#include <system_error>
+
+namespace grainlab {
+
+// ---------------------------------------------------------------------------
+// The key list.
+
+namespace {
+
+#define GL_FIELD(table, key, member, doc) \
+  SpecField { table, key, doc, [](DirectShearSpec& s) -> SpecFieldRef { return &s.member; } }
+
+const std::array kFields{
+    GL_FIELD("", "seed", seed, "seed of every random choice (grain shapes, sizes, placement); same seed, same run"),
+
+    GL_FIELD("grains", "preset", grains.preset, "synthetic grain class: glass-beads | rounded | sub-angular | angular"),
+    GL_FIELD("grains", "folder", grains.folder, "if not empty: import every STL/OBJ/PLY mesh in this folder instead of the preset"),
+    GL_FIELD("grains", "shapes", grains.shapes, "number of distinct grain shapes in the library (grains reuse them, scaled)"),
+    GL_FIELD("grains", "faces", grains.faces, "face budget per grain shape (>= 100)"),
+    GL_FIELD("grains", "d_min", grains.d_min, "m, smallest sieve size (0.707 mm: retained on sieve #25)"),
+    GL_FIELD("grains", "d_max", grains.d_max, "m, largest sieve size (0.841 mm: passing sieve #20)"),
+
+    GL_FIELD("material", "preset", material.preset, "sand preset applied first: crushed-limestone | griffin | ottawa | glass-beads | \"\" (none)"),
+    GL_FIELD("material", "contact_law", material.law, "\"hertz-material\" (E, Poisson, restitution) | \"hertz\" (paper's k_n, k_t, gamma_n, gamma_t) | \"hooke\" (linear)"),
+    GL_FIELD("material", "density", material.grain.density, "kg/m^3, grain density"),
+    GL_FIELD("material", "friction", material.grain.friction, "Coulomb friction coefficient between grains during shear"),
+    GL_FIELD("material", "youngs_modulus", material.grain.youngs_modulus, "Pa, Young's modulus (hertz-material)"),
+    GL_FIELD("material", "poisson_ratio", material.grain.poisson_ratio, "Poisson ratio, in (-1, 0.5) (hertz-material)"),
+    GL_FIELD("material", "restitution", material.grain.restitution, "coefficient of normal restitution, in (0, 1] (hertz-material)"),
+    GL_FIELD("material", "k_n", material.grain.k_n, "normal stiffness: hertz N/m^2, hooke N/m"),
+    GL_FIELD("material", "k_t", material.grain.k_t, "tangential stiffness: hertz N/m^2, hooke N/m"),
+    GL_FIELD("material", "gamma_n", material.grain.gamma_n, "normal damping: hertz 1/(m s), hooke 1/s"),
+    GL_FIELD("material", "gamma_t", material.grain.gamma_t, "tangential damping: hertz 1/(m s), hooke 1/s"),
+    GL_FIELD("material", "wall_friction", material.wall_friction, "friction coefficient between grains and the box walls and cap"),
+
+    GL_FIELD("box", "length", box.length, "m, along the shear direction x"),
+    GL_FIELD("box", "width", box.width, "m, along y"),
+    GL_FIELD("box", "height", box.height, "m, target specimen height after preparation"),
+    GL_FIELD("box", "gap", box.gap, "m, opening between the lower and upper halves"),
+
+    GL_FIELD("specimen", "relative_density", specimen.relative_density, "target Dr = (e_max - e)/(e_max - e_min), in [0, 1]"),
+    GL_FIELD("specimen", "e_max", specimen.e_max, "maximum index void ratio of the sand"),
+    GL_FIELD("specimen", "e_min", specimen.e_min, "minimum index void ratio of the sand"),
+    GL_FIELD("specimen", "void_ratio", specimen.void_ratio, "if > 0: target void ratio, overrides relative_density"),
+    GL_FIELD("specimen", "tolerance", specimen.tolerance, "accepted |e - e_target|"),
+    GL_FIELD("specimen", "deposition_friction", specimen.deposition_friction, "friction between grains while raining and compacting (lower: denser)"),
+
+    GL_FIELD("consolidation", "normal_stress", consolidation.normal_stress, "Pa, normal stress held by the top cap (100 kPa = 100e3)"),
+    GL_FIELD("consolidation", "tolerance", consolidation.tolerance, "relative stress error accepted, in (0, 1)"),
+    GL_FIELD("consolidation", "max_unbalanced", consolidation.max_unbalanced, "unbalanced-force ratio accepted as at rest"),
+
+    GL_FIELD("shear", "speed", shear.speed, "m/s of the upper half; 0 = from numerics.inertial_number"),
+    GL_FIELD("shear", "final_strain", shear.final_strain, "shear strain d_h / L at which the test ends, in (0, 1]"),
+
+    GL_FIELD("numerics", "time_step", numerics.time_step, "s; 0 = time_step_fraction x the critical step"),
+    GL_FIELD("numerics", "time_step_fraction", numerics.time_step_fraction, "fraction of the critical step used when time_step = 0, in (0, 1]"),
+    GL_FIELD("numerics", "density_scaling", numerics.density_scaling, "factor on inertia (not weight); 0 = automatic"),
+    GL_FIELD("numerics", "inertial_number", numerics.inertial_number, "target I = gamma_dot d sqrt(rho / p) when shear.speed = 0"),
+    GL_FIELD("numerics", "threads", numerics.threads, "worker threads; 0 = all cores"),
+
+    GL_FIELD("output", "folder", output.folder, "where the run writes its files"),
+    GL_FIELD("output", "strain_interval", output.strain_interval, "sample series.csv every this much shear strain"),
+    GL_FIELD("output", "checkpoint_interval", output.checkpoint_interval, "s of wall-clock time between checkpoints"),
+};
+
+#undef GL_FIELD
+
+constexpr std::array<SpecTable, 8> kTables{{
+    {"grains", "the grains: a synthetic class or a folder of scanned meshes, and the sieve range"},
+    {"material", "grain material and contact law (SI units)"},
+    {"box", "the direct shear box"},
+    {"specimen", "the specimen's target density"},
+    {"consolidation", "servo-controlled consolidation under the top cap"},
+    {"shear", "shearing: the upper half moves along x"},
+    {"numerics", "time step, density scaling, threads"},
+    {"output", "what the run writes, and where"},
+}};
+
+// The grain classes grains/ can generate.
+constexpr std::array<std::string_view, 4> kGrainClasses{"glass-beads", "rounded", "sub-angular", "angular"};
+
+}  // namespace
+
+std::span<const SpecField> spec_fields() { return kFields; }
+std::span<const SpecTable> spec_tables() { return kTables; }
+
+// ---------------------------------------------------------------------------
+// Helpers shared by parsing and validation.
+
+namespace {
+
+// Dotted key -> line in the file (absent: not given in the file).
+using LineMap = std::map<std::string, int, std::less<>>;
+
+std::string where(const std::string& source, int line, int column = 0) {
+  if (line <= 0) return source;
+  if (column <= 0) return fmt::format("{} (line {})", source, line);
+  return fmt::format("{} (line {}, column {})", source, line, column);
+}
+
+int line_of(const toml::source_region& r) { return static_cast<int>(r.begin.line); }
+
+// Levenshtein distance, for "did you mean" suggestions.
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+  std::vector<std::size_t> prev(b.size() + 1), cur(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) prev[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    cur[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t subst = prev[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1);
+      cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, subst});
+    }
+    std::swap(prev, cur);
+  }
+  return prev[b.size()];
+}
+
+// " Did you mean 'x'?" when a candidate is close enough, else "".
+std::string suggestion(std::string_view name, const std::vector<std::string>& candidates) {
+  std::string best;
+  std::size_t best_d = std::numeric_limits<std::size_t>::max();
+  for (const std::string& c : candidates) {
+    const std::size_t d = edit_distance(name, c);
+    if (d < best_d) best_d = d, best = c;
+  }
+  const std::size_t limit = std::max<std::size_t>(2, name.size() / 3);
+  return best_d <= limit ? fmt::format(" Did you mean '{}'?", best) : std::string();
+}
+
+std::vector<std::string> keys_of_table(std::string_view table) {
+  std::vector<std::string> keys;
+  for (const SpecField& f : kFields)
+    if (f.table == table) keys.emplace_back(f.key);
+  return keys;
+}
+
+std::vector<std::string> table_names() {
+  std::vector<std::string> names;
+  for (const SpecTable& t : kTables) names.emplace_back(t.name);
+  return names;
+}
+
+const SpecField* find_field(std::string_view table, std::string_view key) {
+  for (const SpecField& f : kFields)
+    if (f.table == table && f.key == key) return &f;
+  return nullptr;
+}
+
+bool is_table_name(std::string_view name) {
+  return std::any_of(kTables.begin(), kTables.end(), [&](const SpecTable& t) { return t.name == name; });
+}
+
+std::string toml_double(double v);
+
+// How a TOML node looks, for type errors.
+std::string describe(const toml::node& n) {
+  if (auto s = n.value_exact<std::string>()) return fmt::format("the string \"{}\"", *s);
+  if (n.is_boolean()) return fmt::format("the boolean {}", *n.value_exact<bool>());
+  if (n.is_integer()) return fmt::format("the integer {}", *n.value_exact<std::int64_t>());
+  if (n.is_floating_point()) return fmt::format("the number {}", toml_double(*n.value_exact<double>()));
+  if (n.is_array()) return "an array";
+  if (n.is_table()) return "a table";
+  return "a date/time";
+}
+
+std::string join(const std::vector<std::string>& names) {
+  std::string out;
+  for (const std::string& n : names) out += (out.empty() ? "" : ", ") + n;
+  return out;
+}
+
+// Escapes a string as a TOML basic string, quotes included.
+std::string toml_string(std::string_view s) {
+  std::string out = "\"";
+  for (const char c : s) {
+    switch (c) {
+      case '"': out += "\\\""; break;
+      case '\\': out += "\\\\"; break;
+      case '\n': out += "\\n"; break;
+      case '\t': out += "\\t"; break;
+      case '\r': out += "\\r"; break;
+      default:
+        if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f)
+          out += fmt::format("\\u{:04X}", static_cast<unsigned>(static_cast<unsigned char>(c)));
+        else
+          out += c;
+    }
+  }
+  return out + "\"";
+}
+
+// Shortest decimal that reads back to the same double, always a TOML float:
+// plain below 1e6 and from 1e-3 (0.19, 100000.0), else scientific (4e9, 7.07e-4).
+std::string toml_double(double v) {
+  if (std::isnan(v)) return "nan";
+  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+  const double a = std::fabs(v);
+  if (a == 0 || (a >= 1e-3 && a < 1e6)) {
+    std::string s = fmt::format("{}", v);  // shortest round-trip
+    if (s.find_first_of(".e") == std::string::npos) s += ".0";
+    return s;
+  }
+  std::string s;
+  for (int digits = 0; digits <= 17; ++digits) {
+    s = fmt::format("{:.{}e}", v, digits);
+    if (std::strtod(s.c_str(), nullptr) == v) break;
+  }
+  // "4e+09" -> "4e9", "7.07e-04" -> "7.07e-4": TOML takes both, the short one reads better.
+  const std::size_t e = s.find('e');
+  std::string mantissa = s.substr(0, e), exponent = s.substr(e + 1);
+  const bool negative = exponent[0] == '-';
+  exponent = exponent.substr(1);
+  exponent.erase(0, std::min(exponent.find_first_not_of('0'), exponent.size() - 1));
+  return mantissa + "e" + (negative ? "-" : "") + exponent;
+}
+
+// The value a field holds, as TOML.
+std::string toml_value(const SpecFieldRef& ref) {
+  return std::visit(
+      [](auto* p) -> std::string {
+        using T = std::remove_pointer_t<decltype(p)>;
+        if constexpr (std::is_same_v<T, double>) return toml_double(*p);
+        else if constexpr (std::is_same_v<T, int>) return fmt::format("{}", *p);
+        else if constexpr (std::is_same_v<T, std::uint64_t>) return fmt::format("{}", *p);
+        else if constexpr (std::is_same_v<T, std::string>) return toml_string(*p);
+        else return toml_string(contact_law_name(*p));
+      },
+      ref);
+}
+
+std::string write_toml(const DirectShearSpec& spec_in, bool comments) {
+  DirectShearSpec spec = spec_in;  // the field refs need a mutable spec
+  std::string out;
+  if (comments) {
+    out +=
+        "# grainlab direct shear run. SI units throughout (m, kg, s, N, Pa).\n"
+        "# Every key is optional: a key left out keeps the value shown here.\n"
+        "# Run it with: grainlab run FILE\n\n";
+  }
+  std::string_view table = "";
+  for (const SpecField& f : kFields) {
+    if (f.table != table) {
+      table = f.table;
+      const auto t = std::find_if(kTables.begin(), kTables.end(), [&](const SpecTable& x) { return x.name == table; });
+      out += "\n";
+      if (comments) out += fmt::format("# {}\n", t->doc);
+      out += fmt::format("[{}]\n", table);
+    }
+    const std::string line = fmt::format("{} = {}", f.key, toml_value(f.ref(spec)));
+    if (comments)
+      out += fmt::format("{:<36} # {}\n", line, f.doc);
+    else
+      out += line + "\n";
+  }
+  return out;
+}
+
+// Throws the InputError for an impossible value of `key`.
+[[noreturn]] void impossible(const std::string& source, const LineMap* lines, std::string_view key,
+                             const std::string& value, std::string_view rule) {
+  int line = 0;
+  if (lines) {
+    const auto it = lines->find(key);
+    if (it != lines->end()) line = it->second;
+  }
+  const char* origin = lines && line == 0 ? " (the file does not set it: this is the default or the preset's value)" : "";
+  input_error("{}: {} = {} is impossible: it must be {}. Set {} in the config{}.", where(source, line), key, value,
+              rule, key, origin);
+}
+
+void validate_spec(const DirectShearSpec& spec_in, const std::string& source, const LineMap* lines) {
+  DirectShearSpec spec = spec_in;
+  // Every number must be finite (TOML allows inf and nan).
+  for (const SpecField& f : kFields) {
+    const SpecFieldRef ref = f.ref(spec);
+    if (const auto* p = std::get_if<double*>(&ref); p && !std::isfinite(**p))
+      impossible(source, lines, f.dotted(), toml_double(**p), "a finite number");
+  }
+  const auto need = [&](bool ok, std::string_view key, double value, std::string_view rule) {
+    if (!ok) impossible(source, lines, key, fmt::format("{}", value), rule);
+  };
+  const auto need_s = [&](bool ok, std::string_view key, const std::string& value, std::string_view rule) {
+    if (!ok) impossible(source, lines, key, toml_string(value), rule);
+  };
+
+  const GrainsSpec& g = spec.grains;
+  const bool known_class =
+      std::find(kGrainClasses.begin(), kGrainClasses.end(), g.preset) != kGrainClasses.end();
+  need_s(known_class || (g.preset.empty() && !g.folder.empty()), "grains.preset", g.preset,
+         "one of \"glass-beads\", \"rounded\", \"sub-angular\", \"angular\"");
+  if (!g.folder.empty()) {
+    std::error_code ec;
+    if (!std::filesystem::is_directory(g.folder, ec)) {
+      int line = 0;
+      if (lines)
+        if (const auto it = lines->find("grains.folder"); it != lines->end()) line = it->second;
+      input_error("{}: grains.folder = {}: no such folder (relative paths start at the working directory {}). "
+                  "Give the folder that holds the grain meshes (STL, OBJ, PLY), or remove grains.folder to "
+                  "generate grains from grains.preset.",
+                  where(source, line), toml_string(g.folder), std::filesystem::current_path(ec).string());
+    }
+  }
+  need(g.shapes >= 1, "grains.shapes", g.shapes, "at least 1 (distinct grain shapes)");
+  need(g.faces >= 100, "grains.faces", g.faces, "at least 100 (faces per grain shape; the paper's grains have ~2000)");
+  need(g.d_min > 0, "grains.d_min", g.d_min, "> 0 (m; 0.707 mm is 0.707e-3)");
+  need(g.d_max > g.d_min, "grains.d_max", g.d_max,
+       fmt::format("larger than grains.d_min = {} (m; the sieve range is [d_min, d_max])", g.d_min));
+
+  const MaterialSpec& ms = spec.material;
+  const std::vector<std::string> sands = sand_preset_names();
+  need_s(ms.preset.empty() || std::find(sands.begin(), sands.end(), ms.preset) != sands.end(), "material.preset",
+         ms.preset, fmt::format("one of {} or \"\" (no preset)", join(sands)));
+  const Material& m = ms.grain;
+  need(m.density > 0, "material.density", m.density, "> 0 (kg/m^3; quartz is 2650)");
+  need(m.friction >= 0, "material.friction", m.friction, ">= 0");
+  need(m.youngs_modulus > 0, "material.youngs_modulus", m.youngs_modulus, "> 0 (Pa; 4 GPa is 4e9)");
+  need(m.poisson_ratio > -1 && m.poisson_ratio < 0.5, "material.poisson_ratio", m.poisson_ratio, "in (-1, 0.5)");
+  need(m.restitution > 0 && m.restitution <= 1, "material.restitution", m.restitution, "in (0, 1]");
+  need(m.k_n > 0, "material.k_n", m.k_n, "> 0");
+  need(m.k_t >= 0, "material.k_t", m.k_t, ">= 0");
+  need(m.gamma_n >= 0, "material.gamma_n", m.gamma_n, ">= 0");
+  need(m.gamma_t >= 0, "material.gamma_t", m.gamma_t, ">= 0");
+  need(ms.wall_friction >= 0, "material.wall_friction", ms.wall_friction, ">= 0");
+
+  const BoxSpec& b = spec.box;
+  need(b.length > 0, "box.length", b.length, "> 0 (m)");
+  need(b.width > 0, "box.width", b.width, "> 0 (m)");
+  need(b.height > 0, "box.height", b.height, "> 0 (m)");
+  need(b.gap >= 0, "box.gap", b.gap, ">= 0 (m)");
+  need(b.gap < b.height, "box.gap", b.gap, fmt::format("smaller than box.height = {} (m)", b.height));
+
+  const SpecimenSpec& sp = spec.specimen;
+  need(sp.relative_density >= 0 && sp.relative_density <= 1, "specimen.relative_density", sp.relative_density,
+       "in [0, 1] (a fraction: 96 % is 0.96)");
+  need(sp.e_min > 0, "specimen.e_min", sp.e_min, "> 0");
+  need(sp.e_max > sp.e_min, "specimen.e_max", sp.e_max,
+       fmt::format("larger than specimen.e_min = {}", sp.e_min));
+  need(sp.tolerance > 0, "specimen.tolerance", sp.tolerance, "> 0 (in void ratio)");
+  need(sp.deposition_friction >= 0, "specimen.deposition_friction", sp.deposition_friction, ">= 0");
+
+  const ConsolidationSpec& c = spec.consolidation;
+  need(c.normal_stress > 0, "consolidation.normal_stress", c.normal_stress, "> 0 (Pa; 100 kPa is 100e3)");
+  need(c.tolerance > 0 && c.tolerance < 1, "consolidation.tolerance", c.tolerance,
+       "in (0, 1) (relative: 1 % is 0.01)");
+  need(c.max_unbalanced > 0, "consolidation.max_unbalanced", c.max_unbalanced, "> 0");
+
+  const ShearSpec& sh = spec.shear;
+  need(sh.speed >= 0, "shear.speed", sh.speed, ">= 0 (m/s; 0 picks it from numerics.inertial_number)");
+  need(sh.final_strain > 0 && sh.final_strain <= 1, "shear.final_strain", sh.final_strain,
+       "in (0, 1] (a fraction: 10 % is 0.10)");
+
+  const NumericsSpec& nu = spec.numerics;
+  need(nu.time_step >= 0, "numerics.time_step", nu.time_step, ">= 0 (s; 0 picks a safe step)");
+  need(nu.time_step_fraction > 0 && nu.time_step_fraction <= 1, "numerics.time_step_fraction",
+       nu.time_step_fraction, "in (0, 1]");
+  need(nu.density_scaling >= 0, "numerics.density_scaling", nu.density_scaling, ">= 0 (0 = automatic)");
+  need(nu.inertial_number > 0, "numerics.inertial_number", nu.inertial_number, "> 0 (quasi-static: below 1e-3)");
+  need(nu.threads >= 0, "numerics.threads", nu.threads, ">= 0 (0 = all cores)");
+
+  const OutputSpec& o = spec.output;
+  need_s(!o.folder.empty(), "output.folder", o.folder, "a folder name, not empty");
+  need(o.strain_interval > 0 && o.strain_interval <= sh.final_strain, "output.strain_interval", o.strain_interval,
+       fmt::format("> 0 and at most shear.final_strain = {}", sh.final_strain));
+  need(o.checkpoint_interval > 0, "output.checkpoint_interval", o.checkpoint_interval, "> 0 (s of wall-clock time)");
+
+  need(spec.seed <= static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max()), "seed",
+       static_cast<double>(spec.seed), "at most 2^63 - 1 (a TOML integer)");
+}
+
+// Stores the TOML value `n` into the field `ref`, or throws a type error.
+void assign(const SpecField& f, const SpecFieldRef& ref, const toml::node& n, const std::string& source) {
+  const int line = line_of(n.source());
+  const std::string key = f.dotted();
+  const auto wrong = [&](std::string_view expected) {
+    input_error("{}: {} expects {}, but the file gives {}. ({}: {}.)", where(source, line), key, expected,
+                describe(n), key, std::string(f.doc));
+  };
+  std::visit(
+      [&](auto* p) {
+        using T = std::remove_pointer_t<decltype(p)>;
+        if constexpr (std::is_same_v<T, double>) {
+          if (n.is_integer()) *p = static_cast<double>(*n.value_exact<std::int64_t>());
+          else if (n.is_floating_point()) *p = *n.value_exact<double>();
+          else wrong("a number in SI units (e.g. 100e3, not \"100 kPa\")");
+        } else if constexpr (std::is_same_v<T, int>) {
+          if (!n.is_integer()) wrong("a whole number (e.g. 500, not 500.0)");
+          const std::int64_t v = *n.value_exact<std::int64_t>();
+          if (v < std::numeric_limits<int>::min() || v > std::numeric_limits<int>::max())
+            input_error("{}: {} = {} is out of range; use a value below 2^31.", where(source, line), key, v);
+          *p = static_cast<int>(v);
+        } else if constexpr (std::is_same_v<T, std::uint64_t>) {
+          if (!n.is_integer()) wrong("a whole number >= 0");
+          const std::int64_t v = *n.value_exact<std::int64_t>();
+          if (v < 0) input_error("{}: {} = {} is negative; use a whole number >= 0.", where(source, line), key, v);
+          *p = static_cast<std::uint64_t>(v);
+        } else if constexpr (std::is_same_v<T, std::string>) {
+          if (!n.is_string()) wrong("a string in quotes");
+          *p = *n.value_exact<std::string>();
+        } else {
+          if (!n.is_string()) wrong("a string in quotes");
+          try {
+            *p = parse_contact_law(*n.value_exact<std::string>());
+          } catch (const InputError& e) {
+            input_error("{}: {}: {}.", where(source, line), key, e.what());
+          }
+        }
+      },
+      ref);
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------
+// Public API.
+
+DirectShearSpec parse_config(std::string_view toml_text, const std::string& source_name) {
+  toml::table root;
+  try {
+    root = toml::parse(toml_text, source_name);
+  } catch (const toml::parse_error& e) {
+    input_error("{}: TOML syntax error: {}. Fix the file at that place (TOML is `key = value` lines under "
+                "[table] headers; strings go in double quotes).",
+                where(source_name, static_cast<int>(e.source().begin.line), static_cast<int>(e.source().begin.column)),
+                e.description());
+  }
+
+  // Match every key in the file to a field; refuse what is not a field.
+  std::vector<std::pair<const SpecField*, const toml::node*>> given;
+  LineMap lines;
+  const auto take = [&](const SpecField* f, const toml::node& n) {
+    given.emplace_back(f, &n);
+    lines[f->dotted()] = line_of(n.source());
+  };
+  for (const auto& [key, node] : root) {
+    const std::string name(key.str());
+    const int line = line_of(key.source());
+    if (is_table_name(name)) {
+      const toml::table* t = node.as_table();
+      if (!t)
+        input_error("{}: '{}' must be a table (a [{}] header followed by its keys), but the file gives {}.",
+                    where(source_name, line), name, name, describe(node));
+      for (const auto& [k, n] : *t) {
+        const std::string sub(k.str());
+        if (const SpecField* f = find_field(name, sub)) {
+          take(f, n);
+          continue;
+        }
+        const std::vector<std::string> valid = keys_of_table(name);
+        input_error("{}: unknown key '{}.{}'.{} Valid keys in [{}]: {}.", where(source_name, line_of(k.source())),
+                    name, sub, suggestion(sub, valid), name, join(valid));
+      }
+    } else if (const SpecField* f = find_field("", name)) {
+      take(f, node);
+    } else if (node.is_table()) {
+      input_error("{}: unknown table [{}].{} Valid tables: {}.", where(source_name, line), name,
+                  suggestion(name, table_names()), join(table_names()));
+    } else {
+      // A table key written at the top level (after no header, or before the first one)?
+      std::string hint;
+      for (const SpecField& f : kFields)
+        if (!f.table.empty() && f.key == name) {
+          hint = fmt::format(" It belongs in the [{}] table: put it below the [{}] header.", f.table, f.table);
+          break;
+        }
+      if (hint.empty()) {
+        std::vector<std::string> top = table_names();
+        for (const SpecField& f : kFields)
+          if (f.table.empty()) top.emplace_back(f.key);
+        hint = suggestion(name, top) + fmt::format(" Top-level keys: seed; tables: {}.", join(table_names()));
+      }
+      input_error("{}: unknown key '{}'.{}", where(source_name, line), name, hint);
+    }
+  }
+
+  // The sand preset first, then every other key on top of it.
+  DirectShearSpec spec;
+  for (const auto& [f, n] : given) {
+    if (f->table != "material" || f->key != "preset") continue;
+    std::string preset;
+    assign(*f, SpecFieldRef(&preset), *n, source_name);
+    if (!preset.empty()) {
+      const std::vector<std::string> sands = sand_preset_names();
+      if (std::find(sands.begin(), sands.end(), preset) == sands.end())
+        input_error("{}: material.preset = \"{}\" is not a sand preset.{} Use one of {}, or \"\" for none.",
+                    where(source_name, line_of(n->source())), preset, suggestion(preset, sands), join(sands));
+      apply_sand_preset(spec, preset);
+    }
+    spec.material.preset = preset;
+  }
+  for (const auto& [f, n] : given) {
+    if (f->table == "material" && f->key == "preset") continue;
+    assign(*f, f->ref(spec), *n, source_name);
+  }
+  validate_spec(spec, source_name, &lines);
+  return spec;
+}
+
+DirectShearSpec load_config(const std::filesystem::path& file) {
+  std::error_code ec;
+  if (!std::filesystem::exists(file, ec))
+    input_error("config file '{}' does not exist (working directory: {}). Check the path, or write a default "
+                "config with `grainlab run --print-defaults > {}` and edit it.",
+                file.string(), std::filesystem::current_path(ec).string(), file.string());
+  if (std::filesystem::is_directory(file, ec))
+    input_error("config file '{}' is a folder; give the path of a .toml file.", file.string());
+  std::ifstream in(file, std::ios::binary);
+  if (!in) input_error("config file '{}' cannot be read (check its permissions).", file.string());
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) input_error("config file '{}': read error.", file.string());
+  return parse_config(text.str(), file.string());
+}
+
+void validate(const DirectShearSpec& spec, const std::string& source_name) {
+  validate_spec(spec, source_name, nullptr);
+}
+
+std::string default_config_toml() { return write_toml(DirectShearSpec{}, true); }
+
+std::string to_toml(const DirectShearSpec& spec) { return write_toml(spec, false); }
+
+std::vector<std::string> config_differences(const DirectShearSpec& a_in, const DirectShearSpec& b_in) {
+  DirectShearSpec a = a_in, b = b_in;
+  std::vector<std::string> diff;
+  for (const SpecField& f : kFields) {
+    const bool same = std::visit(
+        [&](auto* pa) {
+          using P = decltype(pa);
+          P pb = std::get<P>(f.ref(b));
+          if constexpr (std::is_same_v<P, double*>) {
+            return std::bit_cast<std::uint64_t>(*pa) == std::bit_cast<std::uint64_t>(*pb);
+          } else {
+            return *pa == *pb;
+          }
+        },
+        f.ref(a));
+    if (!same) diff.push_back(f.dotted());
+  }
+  return diff;
+}
+
+}  // namespace grainlab

@@ -1,0 +1,103 @@
+// Everything a direct shear run needs, as plain values (SI units). The io
+// layer fills it from a TOML file (io/config.h); the lab runs it
+// (lab/direct_shear.h). Defaults are the embedded demo: a small box of
+// sub-angular grains sheared to 10 % strain under 100 kPa.
+#pragma once
+
+#include "dynamics/material.h"
+
+#include <cstdint>
+#include <string>
+
+namespace grainlab {
+
+struct GrainsSpec {
+  std::string preset = "sub-angular";  // glass-beads | rounded | sub-angular | angular
+  std::string folder;                  // if set: import every STL/OBJ/PLY here instead
+  int shapes = 24;                     // distinct shapes in the library (grains reuse them, scaled)
+  int faces = 500;                     // face budget per grain shape
+  double d_min = 0.707e-3;             // m, sieve range (passing #20, retained on #25)
+  double d_max = 0.841e-3;             // m
+};
+
+struct MaterialSpec {
+  std::string preset;                  // crushed-limestone | griffin | ottawa | glass-beads | "" (use values below)
+  ContactLaw law = ContactLaw::HertzMaterial;
+  Material grain = [] {
+    Material m;
+    m.name = "grain";
+    m.density = 2650;
+    m.friction = 0.19;
+    m.youngs_modulus = 4e9;
+    m.poisson_ratio = 0.3;
+    m.restitution = 0.5;
+    m.k_n = 1e12;
+    m.k_t = 8e11;
+    m.gamma_n = 40;
+    m.gamma_t = 20;
+    return m;
+  }();
+  double wall_friction = 0.0;          // box walls and cap (lubricated, as in the lab)
+};
+
+struct BoxSpec {
+  double length = 8.5e-3;   // m, along the shear direction x
+  double width = 8.5e-3;    // m, y
+  double height = 6e-3;     // m, specimen height after preparation (target)
+  double gap = 0.3e-3;      // m, opening between the lower and upper halves
+};
+
+struct SpecimenSpec {
+  double relative_density = 0.96;  // target Dr = (e_max - e)/(e_max - e_min)
+  double e_max = 0.86;             // index void ratios of the sand (Griffin sand, paper section 3)
+  double e_min = 0.53;
+  double void_ratio = -1;          // if > 0: target void ratio, overrides Dr
+  double tolerance = 0.02;         // accepted |e - e_target|
+  double deposition_friction = 0.0;  // inter-grain friction while raining and compacting (lower: denser)
+};
+
+struct ConsolidationSpec {
+  double normal_stress = 100e3;     // Pa
+  double tolerance = 0.01;          // relative stress error accepted
+  double max_unbalanced = 0.05;     // unbalanced-force ratio accepted at rest
+};
+
+struct ShearSpec {
+  double speed = 0;                 // m/s of the upper half; 0 = from numerics.inertial_number
+  double final_strain = 0.10;       // d_h / L
+};
+
+struct NumericsSpec {
+  double time_step = 0;             // s; 0 = time_step_fraction x critical
+  double time_step_fraction = 0.2;
+  double density_scaling = 0;       // multiplies inertia (not weight); 0 = automatic
+  double inertial_number = 1e-3;    // target I = gamma_dot d sqrt(rho / p) when speed = 0
+  int threads = 0;                  // 0 = all cores
+};
+
+struct OutputSpec {
+  std::string folder = "runs/direct_shear";
+  double strain_interval = 0.001;   // sample every this much shear strain
+  double checkpoint_interval = 60;  // s of wall-clock time between checkpoints
+};
+
+struct DirectShearSpec {
+  GrainsSpec grains;
+  MaterialSpec material;
+  BoxSpec box;
+  SpecimenSpec specimen;
+  ConsolidationSpec consolidation;
+  ShearSpec shear;
+  NumericsSpec numerics;
+  OutputSpec output;
+  std::uint64_t seed = 1;
+
+  // Target void ratio from Dr or the explicit value.
+  double target_void_ratio() const {
+    return specimen.void_ratio > 0
+               ? specimen.void_ratio
+               : specimen.e_max - specimen.relative_density * (specimen.e_max - specimen.e_min);
+  }
+};
+
+}  // namespace grainlab

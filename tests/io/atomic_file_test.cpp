@@ -1,0 +1,78 @@
+// Atomic writes: the file appears whole, replaces an old one, and a failed
+// write leaves nothing behind.
+#include "io/atomic_file.h"
+
+#include "core/error.h"
+#include "io_test_helpers.h"
+
+#include <gtest/gtest.h>
+
+#include <csignal>
+#include <fstream>
+#include <sstream>
+
+#include <sys/resource.h>
+
+namespace grainlab {
+namespace {
+
+std::string slurp(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::size_t files_in(const std::filesystem::path& dir) {
+  std::size_t n = 0;
+  for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(dir)) ++n;
+  return n;
+}
+
+TEST(AtomicFile, WritesTheWholeFileAndReplacesAnOldOne) {
+  test::IoTempDir dir;
+  const auto file = dir.path / "series.csv";
+  std::string big(1 << 20, 'x');
+  big[12345] = '\0';  // binary-safe
+  write_file_atomically(file, big);
+  EXPECT_EQ(slurp(file), big);
+  write_file_atomically(file, "short\n");
+  EXPECT_EQ(slurp(file), "short\n");
+  EXPECT_EQ(files_in(dir.path), 1u);  // no temporary left over
+}
+
+TEST(AtomicFile, MissingFolderThrowsAndLeavesNothing) {
+  test::IoTempDir dir;
+  const auto file = dir.path / "missing" / "run.json";
+  const std::string msg = test::error_of<RunError>([&] { write_file_atomically(file, "{}"); });
+  EXPECT_NE(msg.find(file.string()), std::string::npos) << msg;
+  EXPECT_EQ(files_in(dir.path), 0u);
+}
+
+TEST(AtomicFile, FailedWriteRemovesTheTemporaryAndKeepsTheOldFile) {
+  // Make the write itself fail half way: a file size limit (EFBIG instead of
+  // SIGXFSZ). Works as root too, unlike a read-only folder.
+  test::IoTempDir dir;
+  const auto file = dir.path / "checkpoint.bin";
+  write_file_atomically(file, "old");
+  rlimit old_limit{};
+  ASSERT_EQ(::getrlimit(RLIMIT_FSIZE, &old_limit), 0);
+  rlimit small = old_limit;
+  small.rlim_cur = 4096;
+  const auto old_handler = std::signal(SIGXFSZ, SIG_IGN);
+  ASSERT_EQ(::setrlimit(RLIMIT_FSIZE, &small), 0);
+  std::string msg;
+  try {
+    write_file_atomically(file, std::string(100000, 'y'));
+  } catch (const RunError& e) {
+    msg = e.what();
+  }
+  ::setrlimit(RLIMIT_FSIZE, &old_limit);
+  std::signal(SIGXFSZ, old_handler);
+  EXPECT_NE(msg.find(file.string()), std::string::npos) << msg;
+  EXPECT_EQ(slurp(file), "old");
+  EXPECT_EQ(files_in(dir.path), 1u);
+}
+
+}  // namespace
+}  // namespace grainlab

@@ -1,0 +1,187 @@
+// Checkpoints: a State with random contents comes back bit for bit; damaged,
+// truncated and wrong-version files are refused with a clear message.
+#include "io/checkpoint.h"
+
+#include "core/error.h"
+#include "io/atomic_file.h"
+#include "io/config.h"
+#include "io_test_helpers.h"
+
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <fstream>
+#include <random>
+
+namespace grainlab {
+namespace {
+
+class RandomFill {
+ public:
+  explicit RandomFill(std::uint64_t seed) : rng_(seed) {}
+  // Any bit pattern, NaNs included: the format must keep raw bits.
+  double d() { return std::bit_cast<double>(bits_(rng_)); }
+  Vec3 v() { return {d(), d(), d()}; }
+  Quat q() { return Quat(d(), d(), d(), d()); }
+  Index i() { return static_cast<Index>(bits_(rng_)); }
+  bool b() { return bits_(rng_) & 1; }
+  std::size_t n(std::size_t max) { return bits_(rng_) % (max + 1); }
+
+  PairContact pair() {
+    PairContact p;
+    p.a = i(), p.b = i(), p.dir = v(), p.xi = v(), p.hint_a = i(), p.hint_b = i(), p.warm = b();
+    p.geo.touching = b(), p.geo.depth = d(), p.geo.normal = v(), p.geo.point = v(), p.geo.spread = d();
+    p.force = v(), p.torque = v(), p.normal_force = d();
+    return p;
+  }
+
+  State state() {
+    State s;
+    s.time = d();
+    s.step = static_cast<std::int64_t>(bits_(rng_));
+    s.rebuild_pairs = b();
+    s.bodies.resize(n(50) + 1);
+    for (BodyState& x : s.bodies) x.x = v(), x.v = v(), x.w = v(), x.q = q();
+    s.walls.resize(n(6) + 1);
+    for (WallState& w : s.walls) w.x = v(), w.q = q(), w.v = v(), w.force = v();
+    s.pairs.resize(n(80) + 1);
+    for (PairContact& p : s.pairs) p = pair();
+    s.wall_pairs.resize(n(30) + 1);
+    for (PairContact& p : s.wall_pairs) p = pair();
+    s.x_at_rebuild.resize(s.bodies.size());
+    for (Vec3& x : s.x_at_rebuild) x = v();
+    return s;
+  }
+
+ private:
+  std::mt19937_64 rng_;
+  std::uniform_int_distribution<std::uint64_t> bits_;
+};
+
+std::uint64_t bits(double x) { return std::bit_cast<std::uint64_t>(x); }
+
+void expect_same(const Vec3& a, const Vec3& b) {
+  for (int k = 0; k < 3; ++k) EXPECT_EQ(bits(a[k]), bits(b[k]));
+}
+void expect_same(const Quat& a, const Quat& b) {
+  for (int k = 0; k < 4; ++k) EXPECT_EQ(bits(a.coeffs()[k]), bits(b.coeffs()[k]));
+}
+void expect_same(const PairContact& a, const PairContact& b) {
+  EXPECT_EQ(a.a, b.a);
+  EXPECT_EQ(a.b, b.b);
+  expect_same(a.dir, b.dir);
+  expect_same(a.xi, b.xi);
+  EXPECT_EQ(a.hint_a, b.hint_a);
+  EXPECT_EQ(a.hint_b, b.hint_b);
+  EXPECT_EQ(a.warm, b.warm);
+  EXPECT_EQ(a.geo.touching, b.geo.touching);
+  EXPECT_EQ(bits(a.geo.depth), bits(b.geo.depth));
+  expect_same(a.geo.normal, b.geo.normal);
+  expect_same(a.geo.point, b.geo.point);
+  EXPECT_EQ(bits(a.geo.spread), bits(b.geo.spread));
+  expect_same(a.force, b.force);
+  expect_same(a.torque, b.torque);
+  EXPECT_EQ(bits(a.normal_force), bits(b.normal_force));
+}
+void expect_same(const State& a, const State& b) {
+  EXPECT_EQ(bits(a.time), bits(b.time));
+  EXPECT_EQ(a.step, b.step);
+  EXPECT_EQ(a.rebuild_pairs, b.rebuild_pairs);
+  ASSERT_EQ(a.bodies.size(), b.bodies.size());
+  for (std::size_t i = 0; i < a.bodies.size(); ++i) {
+    expect_same(a.bodies[i].x, b.bodies[i].x);
+    expect_same(a.bodies[i].v, b.bodies[i].v);
+    expect_same(a.bodies[i].w, b.bodies[i].w);
+    expect_same(a.bodies[i].q, b.bodies[i].q);
+  }
+  ASSERT_EQ(a.walls.size(), b.walls.size());
+  for (std::size_t i = 0; i < a.walls.size(); ++i) {
+    expect_same(a.walls[i].x, b.walls[i].x);
+    expect_same(a.walls[i].q, b.walls[i].q);
+    expect_same(a.walls[i].v, b.walls[i].v);
+    expect_same(a.walls[i].force, b.walls[i].force);
+  }
+  ASSERT_EQ(a.pairs.size(), b.pairs.size());
+  for (std::size_t i = 0; i < a.pairs.size(); ++i) expect_same(a.pairs[i], b.pairs[i]);
+  ASSERT_EQ(a.wall_pairs.size(), b.wall_pairs.size());
+  for (std::size_t i = 0; i < a.wall_pairs.size(); ++i) expect_same(a.wall_pairs[i], b.wall_pairs[i]);
+  ASSERT_EQ(a.x_at_rebuild.size(), b.x_at_rebuild.size());
+  for (std::size_t i = 0; i < a.x_at_rebuild.size(); ++i) expect_same(a.x_at_rebuild[i], b.x_at_rebuild[i]);
+}
+
+TEST(Checkpoint, RandomStateRoundTripsBitForBit) {
+  test::IoTempDir dir;
+  for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+    RandomFill fill(seed);
+    const State s = fill.state();
+    std::vector<std::uint8_t> protocol(fill.n(100));
+    for (auto& b : protocol) b = static_cast<std::uint8_t>(fill.i());
+    const std::uint64_t hash = 0x0123456789abcdefull * seed;
+    save_checkpoint(dir.path / "checkpoint.bin", s, protocol, hash);
+    const Checkpoint c = load_checkpoint(dir.path / "checkpoint.bin");
+    expect_same(c.state, s);
+    EXPECT_EQ(c.protocol, protocol);
+    EXPECT_EQ(c.config_hash, hash);
+  }
+}
+
+TEST(Checkpoint, EmptyStateRoundTrips) {
+  const State s;
+  const Checkpoint c = decode_checkpoint(encode_checkpoint(s, {}, 0), "empty");
+  expect_same(c.state, s);
+  EXPECT_TRUE(c.protocol.empty());
+}
+
+std::string refusal(const std::vector<std::uint8_t>& bytes) {
+  return test::error_of<InputError>([&] { decode_checkpoint(bytes, "ck.bin"); });
+}
+
+TEST(Checkpoint, TruncatedFileIsRefused) {
+  RandomFill fill(11);
+  const std::vector<std::uint8_t> good = encode_checkpoint(fill.state(), std::vector<std::uint8_t>{1, 2, 3}, 9);
+  for (const std::size_t keep : {std::size_t{0}, std::size_t{5}, std::size_t{20}, good.size() / 2, good.size() - 1}) {
+    const std::string msg = refusal({good.begin(), good.begin() + static_cast<std::ptrdiff_t>(keep)});
+    EXPECT_NE(msg.find("ck.bin"), std::string::npos) << msg;
+  }
+  EXPECT_NE(refusal({good.begin(), good.end() - 1}).find("truncated"), std::string::npos);
+}
+
+TEST(Checkpoint, AnyFlippedByteIsRefused) {
+  RandomFill fill(12);
+  const std::vector<std::uint8_t> good = encode_checkpoint(fill.state(), std::vector<std::uint8_t>{4, 5}, 77);
+  std::mt19937 rng(3);
+  for (int trial = 0; trial < 200; ++trial) {
+    std::vector<std::uint8_t> bad = good;
+    const std::size_t at = trial < 32 ? static_cast<std::size_t>(trial) : rng() % bad.size();
+    if (at >= 12 && at < 16) continue;  // the reserved word is not checked
+    bad[at] ^= static_cast<std::uint8_t>(1u << (rng() % 8));
+    EXPECT_THROW(decode_checkpoint(bad, "ck.bin"), InputError) << "byte " << at;
+  }
+  std::vector<std::uint8_t> flipped = good;
+  flipped[100] ^= 0x10;
+  EXPECT_NE(refusal(flipped).find("checksum"), std::string::npos);
+}
+
+TEST(Checkpoint, WrongVersionAndWrongFileAreRefused) {
+  std::vector<std::uint8_t> bytes = encode_checkpoint(State{}, {}, 0);
+  bytes[8] = 99;  // version, little-endian
+  EXPECT_NE(refusal(bytes).find("version 99"), std::string::npos) << refusal(bytes);
+  const std::string text = "seed = 1\n";
+  const std::string msg = refusal({text.begin(), text.end()});
+  EXPECT_NE(msg.find("not a grainlab checkpoint"), std::string::npos) << msg;
+  const std::string missing = test::error_of<InputError>([] { load_checkpoint("/no/such/checkpoint.bin"); });
+  EXPECT_NE(missing.find("/no/such/checkpoint.bin"), std::string::npos) << missing;
+}
+
+TEST(Checkpoint, ConfigHashFollowsTheConfig) {
+  DirectShearSpec a, b;
+  EXPECT_EQ(config_hash(a), config_hash(b));
+  b.consolidation.normal_stress = 100e3 + 1e-9;
+  EXPECT_NE(config_hash(a), config_hash(b));
+  EXPECT_EQ(fnv1a64({}), 0xcbf29ce484222325ull);
+  const std::uint8_t a_byte[] = {'a'};
+  EXPECT_EQ(fnv1a64(a_byte), 0xaf63dc4c8601ec8cull);  // published FNV-1a 64 test vector for "a"
+}
+
+}  // namespace
+}  // namespace grainlab
