@@ -118,21 +118,24 @@ TriMesh read_mesh(const std::filesystem::path& path) {
   if (ext == ".stl") validate_stl(path, size);
 
   Assimp::Importer importer;
-  // Drop per-vertex normals, colours and texture coordinates so that vertex
-  // joining merges by position only.
+  // Drop normals, colours and texture coordinates. No assimp vertex joining:
+  // its epsilon merged distinct vertices ~1 um apart in metre-unit grains; the
+  // exact merge by position below is enough (repair_mesh merges near-duplicates
+  // with a tolerance relative to the grain's size).
   importer.SetPropertyInteger(AI_CONFIG_PP_RVC_FLAGS,
                               aiComponent_NORMALS | aiComponent_TANGENTS_AND_BITANGENTS |
                                   aiComponent_COLORS | aiComponent_TEXCOORDS);
   const aiScene* scene = importer.ReadFile(
-      path.string(), aiProcess_RemoveComponent | aiProcess_JoinIdenticalVertices | aiProcess_Triangulate);
+      path.string(), aiProcess_RemoveComponent | aiProcess_Triangulate);
   if (scene == nullptr) {
     input_error("mesh '{}': cannot be parsed ({}); check that it is a valid {} file or re-export it",
                 name, importer.GetErrorString(), ext.substr(1));
   }
 
-  // Concatenate, merging exactly identical positions across meshes.
+  // Concatenate, merging exactly identical positions (by their bits, so that a
+  // NaN vertex shared by several faces counts once) within and across meshes.
   TriMesh m;
-  std::map<std::array<double, 3>, Index> seen;
+  std::map<std::array<std::uint64_t, 3>, Index> seen;
   Index non_finite = 0;
   for (unsigned mi = 0; mi < scene->mNumMeshes; ++mi) {
     const aiMesh* am = scene->mMeshes[mi];
@@ -140,14 +143,14 @@ TriMesh read_mesh(const std::filesystem::path& path) {
     for (unsigned v = 0; v < am->mNumVertices; ++v) {
       const aiVector3D& p = am->mVertices[v];
       const Vec3 q(p.x, p.y, p.z);
-      if (!q.allFinite()) {
-        ++non_finite;
-        local[v] = static_cast<Index>(m.vertices.size());
+      const std::array<std::uint64_t, 3> key = {std::bit_cast<std::uint64_t>(q.x()),
+                                                 std::bit_cast<std::uint64_t>(q.y()),
+                                                 std::bit_cast<std::uint64_t>(q.z())};
+      const auto [it, inserted] = seen.try_emplace(key, static_cast<Index>(m.vertices.size()));
+      if (inserted) {
         m.vertices.push_back(q);
-        continue;
+        non_finite += !q.allFinite();
       }
-      const auto [it, inserted] = seen.try_emplace({q.x(), q.y(), q.z()}, static_cast<Index>(m.vertices.size()));
-      if (inserted) m.vertices.push_back(q);
       local[v] = it->second;
     }
     for (unsigned f = 0; f < am->mNumFaces; ++f) {

@@ -16,7 +16,7 @@ namespace grainlab {
 namespace {
 
 constexpr double kSlab = 2.5e-3;          // m, thickness of the box slabs
-constexpr double kDepositionGravity = 10;  // g while raining: a numerical preparation step
+constexpr double kDepositionGravity = 100;  // g while raining: a numerical preparation step
 constexpr double kServoAlpha = 0.3;
 constexpr int kCheckEvery = 50;            // steps between rest checks
 constexpr int kCalmChecks = 20;            // consecutive calm checks = at rest
@@ -232,8 +232,13 @@ bool DirectShearTest::advance(int max_steps) {
     }
     if (world_.state.step % kCheckEvery != 0) continue;
     const std::int64_t in_phase = world_.state.step - progress_.phase_start_step[static_cast<int>(p)];
+    // Deposit: at rest when the kinetic energy is a small fraction of the work
+    // of lifting every grain by one diameter against the deposition gravity
+    // (inertial masses on both sides), and forces balance.
+    const double lift = mean_mass_ * world_.model.density_scale * kDepositionGravity * 9.81 * mean_diameter_;
     const bool calm = p == ShearPhase::Deposit
-                          ? world_.kinetic_energy() < 1e-6 * mean_mass_ * 9.81 * mean_diameter_ * world_.model.bodies.size()
+                          ? world_.kinetic_energy() < 1e-4 * lift * world_.model.bodies.size() &&
+                                unbalanced_force_ratio() < spec_.consolidation.max_unbalanced
                           : at_rest(true);
     progress_.calm_checks = calm ? progress_.calm_checks + 1 : 0;
     if (progress_.calm_checks < kCalmChecks) {

@@ -10,7 +10,7 @@
 // default box) so that no opening appears as the halves slide.
 //
 // Protocol (phases):
-//   Deposit      grains placed on a loose lattice rain under (10 g) gravity with
+//   Deposit      grains placed on a loose lattice rain under 100 g gravity with
 //                the deposition friction until they are at rest;
 //   Compact      the cap comes down and the servo brings the normal stress to the
 //                target, still with the deposition friction; the void ratio

@@ -1,28 +1,28 @@
-// Grain shapes for a run (see grain_library.h). Until the grains layer's
-// generator lands, the presets use the ellipsoidal convex grain.
+// Grain shapes for a run (see grain_library.h): the grains layer generates or
+// imports them; glass beads become analytic spheres of the same volume.
 #include "lab/grain_library.h"
 
-#include "core/error.h"
-#include "core/rng.h"
-#include "grains/convex_grain.h"
+#include "geometry/mass_properties.h"
+#include "grains/grain_set.h"
 
 #include <cmath>
+#include <numbers>
 
 namespace grainlab {
 
 std::vector<Index> add_grain_shapes(Model& model, const GrainsSpec& spec, std::uint64_t seed) {
-  Rng rng(seed ^ 0x677261696e73ULL);
+  const SieveRange sieve{spec.d_min, spec.d_max};
+  const GrainSet set = spec.folder.empty()
+                           ? generate_grain_set(parse_grain_preset(spec.preset), spec.shapes, seed, sieve, spec.faces)
+                           : import_grain_set(spec.folder, spec.faces, sieve);
   std::vector<Index> shapes;
-  for (int k = 0; k < spec.shapes; ++k) {
-    const double d = rng.uniform(spec.d_min, spec.d_max);
-    if (spec.preset == "glass-beads") {
-      shapes.push_back(model.add_sphere_shape(0.5 * d, "bead" + std::to_string(k)));
-      continue;
+  for (std::size_t k = 0; k < set.meshes.size(); ++k) {
+    if (set.spheres) {
+      const double volume = mass_properties(set.meshes[k]).volume;
+      shapes.push_back(model.add_sphere_shape(std::cbrt(3 * volume / (4 * std::numbers::pi)), set.names[k]));
+    } else {
+      shapes.push_back(model.add_mesh_shape(set.meshes[k], set.names[k]));
     }
-    ConvexGrainSpec gs;
-    gs.equivalent_radius = 0.5 * d;
-    gs.points = spec.faces / 2 + 2;
-    shapes.push_back(model.add_mesh_shape(convex_grain(gs, rng), "grain" + std::to_string(k)));
   }
   return shapes;
 }
