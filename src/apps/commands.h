@@ -16,4 +16,7 @@ Command add_demo_command(CLI::App& app);
 // `grainlab grains generate|stats`: synthetic grain sets and grain shape metrics.
 Command add_grains_command(CLI::App& app);
 
+// `grainlab run`: a direct shear test from a config file.
+Command add_run_command(CLI::App& app);
+
 }  // namespace grainlab::apps

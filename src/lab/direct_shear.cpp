@@ -17,7 +17,7 @@ namespace {
 
 constexpr double kSlab = 2.5e-3;          // m, thickness of the box slabs
 constexpr double kDepositionGravity = 100;  // g while raining: a numerical preparation step
-constexpr double kServoAlpha = 0.3;
+constexpr double kServoAlpha = 0.05;
 constexpr int kCheckEvery = 50;            // steps between rest checks
 constexpr int kCalmChecks = 20;            // consecutive calm checks = at rest
 
@@ -127,7 +127,7 @@ DirectShearTest::DirectShearTest(const DirectShearSpec& spec) : spec_(spec) {
                      ? spec.shear.speed
                      : spec.numerics.inertial_number * H /
                            (mean_diameter_ * std::sqrt(rho / spec.consolidation.normal_stress));
-  cap_speed_limit_ = 1e-3 * mean_diameter_ / dt_;
+  cap_speed_limit_ = 2e-4 * mean_diameter_ / dt_;
   world_.add_controller([this](World& w, double dt) { servo(w, dt); });
   enter(ShearPhase::Deposit);
 }
@@ -234,11 +234,10 @@ bool DirectShearTest::advance(int max_steps) {
     const std::int64_t in_phase = world_.state.step - progress_.phase_start_step[static_cast<int>(p)];
     // Deposit: at rest when the kinetic energy is a small fraction of the work
     // of lifting every grain by one diameter against the deposition gravity
-    // (inertial masses on both sides), and forces balance.
+    // (inertial masses on both sides).
     const double lift = mean_mass_ * world_.model.density_scale * kDepositionGravity * 9.81 * mean_diameter_;
     const bool calm = p == ShearPhase::Deposit
-                          ? world_.kinetic_energy() < 1e-4 * lift * world_.model.bodies.size() &&
-                                unbalanced_force_ratio() < spec_.consolidation.max_unbalanced
+                          ? world_.kinetic_energy() < 1e-4 * lift * world_.model.bodies.size()
                           : at_rest(true);
     progress_.calm_checks = calm ? progress_.calm_checks + 1 : 0;
     if (progress_.calm_checks < kCalmChecks) {

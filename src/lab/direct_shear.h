@@ -23,9 +23,9 @@
 //
 // Servo: v_z = G (sigma - sigma_target) with G = alpha A / (k_cap dt), where
 // k_cap is the summed tangent stiffness of the cap's contacts (1.5 f/delta for
-// Hertz, f/delta for Hooke) and alpha = 0.3: the stress error would be removed in
+// Hertz, f/delta for Hooke) and alpha = 0.05: the stress error would be removed in
 // about 1/alpha steps if the specimen were a spring k_cap, and the cap never
-// moves more than 1e-4 grain diameters per step (the speed is clamped).
+// moves more than 2e-4 grain diameters per step (the speed is clamped).
 //
 // Measured (DESIGN.md "Walls and the direct shear box"): shear force F on the
 // upper half (minus the x force the grains put on its slabs and the cap),

@@ -1,0 +1,198 @@
+// `grainlab run FILE`: a direct shear test from a TOML config, with progress,
+// series.csv and run.json, checkpoints on an interval and on SIGINT/SIGTERM,
+// and --resume. Every output file is written to a temporary name and renamed.
+#include "apps/commands.h"
+#include "core/error.h"
+#include "core/parallel.h"
+#include "core/timer.h"
+#include "io/checkpoint.h"
+#include "io/atomic_file.h"
+#include "io/config.h"
+#include "io/json.h"
+#include "io/table.h"
+#include "lab/direct_shear.h"
+
+#include <fmt/format.h>
+
+#include <atomic>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
+namespace grainlab::apps {
+
+namespace {
+
+std::atomic<int> g_stop_signal{0};
+extern "C" void on_stop_signal(int sig) { g_stop_signal = sig; }
+
+struct RunOptions {
+  std::string file;
+  bool print_defaults = false;
+  bool use_defaults = false;
+  bool resume = false;
+  bool quiet = false;
+};
+
+void write_series(const DirectShearTest& test, const std::filesystem::path& out) {
+  Table t;
+  t.columns = shear_series_columns();
+  t.rows = test.series();
+  write_file_atomically(out / "series.csv", t.to_csv());
+}
+
+void write_run_json(const DirectShearTest& test, const std::filesystem::path& out, double wall_s) {
+  const ShearSummary s = test.summary();
+  const World& w = test.world();
+  nlohmann::json j;
+  j["grainlab_version"] = "0.1.0";
+  j["config"] = spec_to_json(test.spec());
+  j["seed"] = test.spec().seed;
+  j["grains"] = w.model.bodies.size();
+  j["time_step_s"] = test.time_step();
+  j["density_scaling"] = w.model.density_scale;
+  j["shear_speed_m_per_s"] = test.shear_speed();
+  j["mean_equivalent_diameter_m"] = test.mean_diameter();
+  j["phase"] = shear_phase_name(test.phase());
+  j["preparation"] = {{"void_ratio", test.achieved_void_ratio()},
+                      {"relative_density", test.achieved_relative_density()},
+                      {"target_void_ratio", test.spec().target_void_ratio()}};
+  j["peaks"] = {{"friction_angle_deg", s.peak_friction_angle_deg},
+                {"strain_at_peak_friction", s.strain_at_peak_friction},
+                {"stress_ratio", s.peak_stress_ratio},
+                {"dilation_angle_deg", s.peak_dilation_angle_deg},
+                {"strain_at_peak_dilation", s.strain_at_peak_dilation}};
+  j["final"] = {{"friction_angle_deg", s.final_friction_angle_deg},
+                {"dilation_angle_deg", s.final_dilation_angle_deg},
+                {"void_ratio", s.final_void_ratio}};
+  j["timings"] = {{"wall_s", wall_s}, {"steps", w.state.step}, {"simulated_s", w.state.time}};
+  write_json_file(out / "run.json", j);
+}
+
+int run(const RunOptions& o) {
+  if (o.print_defaults) {
+    fmt::print("{}", default_config_toml());
+    return 0;
+  }
+  if (o.file.empty() && !o.use_defaults)
+    input_error("grainlab run needs a config file (grainlab run test.toml), or --default for the "
+                "embedded default; `grainlab run --print-defaults > test.toml` writes one to edit");
+  const DirectShearSpec spec = o.use_defaults ? parse_config(default_config_toml(), "<embedded default>")
+                                              : load_config(o.file);
+  if (spec.numerics.threads > 0) set_thread_count(spec.numerics.threads);
+
+  // Everything that can refuse the run happens before anything is written.
+  DirectShearTest test(spec);
+  const std::filesystem::path out = spec.output.folder;
+  const std::filesystem::path checkpoint = out / "checkpoint.bin";
+  if (o.resume) {
+    if (!std::filesystem::exists(checkpoint))
+      input_error("--resume: no checkpoint at '{}'; start the run without --resume", checkpoint.string());
+    const DirectShearSpec before = load_config(out / "config.toml");
+    const auto diff = config_differences(before, spec);
+    if (!diff.empty())
+      input_error("--resume: the config differs from the run in '{}' ({}); resume with the same config "
+                  "or start a new run in another output.folder",
+                  out.string(), fmt::join(diff, ", "));
+    Checkpoint ck = load_checkpoint(checkpoint);
+    if (ck.config_hash != config_hash(spec))
+      input_error("--resume: checkpoint '{}' belongs to another config", checkpoint.string());
+    test.world().state = std::move(ck.state);
+    test.load_progress(ck.protocol);
+    fmt::print("resuming at step {} ({} phase, shear strain {:.4f})\n", test.world().state.step,
+               shear_phase_name(test.phase()), test.shear_strain());
+  } else {
+    std::filesystem::create_directories(out);
+    write_file_atomically(out / "config.toml", to_toml(spec));
+  }
+  const auto save = [&] {
+    save_checkpoint(checkpoint, test.world().state, test.save_progress(), config_hash(spec));
+  };
+
+  const World& w = test.world();
+  fmt::print("grainlab run: {} grains ({} preset), box {:.1f} x {:.1f} x {:.1f} mm, {:.0f} kPa, "
+             "dt {:.3g} s, density scaling {:g}, shear speed {:.3g} mm/s, {} threads\n",
+             w.model.bodies.size(), spec.grains.folder.empty() ? spec.grains.preset : spec.grains.folder,
+             spec.box.length * 1e3, spec.box.width * 1e3, spec.box.height * 1e3,
+             spec.consolidation.normal_stress * 1e-3, test.time_step(), w.model.density_scale,
+             test.shear_speed() * 1e3, thread_count());
+  std::signal(SIGINT, on_stop_signal);
+  std::signal(SIGTERM, on_stop_signal);
+
+  Stopwatch clock, since_checkpoint, since_line;
+  std::size_t written_rows = test.series().size();
+  ShearPhase phase = test.phase();
+  std::int64_t shear_start_step = test.phase_step(ShearPhase::Shear), steps_at_start = w.state.step;
+  bool running = true;
+  while (running) {
+    running = test.advance(200);
+    if (test.series().size() != written_rows) {
+      write_series(test, out);
+      written_rows = test.series().size();
+    }
+    if (test.phase() != phase) {
+      phase = test.phase();
+      if (phase == ShearPhase::Shear) shear_start_step = w.state.step;
+      if (phase == ShearPhase::Consolidate)
+        fmt::print("  prepared: void ratio {:.3f} (target {:.3f}), Dr {:.0f} %\n", test.achieved_void_ratio(),
+                   spec.target_void_ratio(), 100 * test.achieved_relative_density());
+      fmt::print("  phase {} from step {}\n", shear_phase_name(phase), w.state.step);
+    }
+    if (!o.quiet && (since_line.seconds() > 2 || !running)) {
+      since_line.reset();
+      const double rate = (w.state.step - steps_at_start) / std::max(1e-9, clock.seconds());
+      std::string eta = "";
+      if (phase == ShearPhase::Shear && test.shear_strain() > 0) {
+        const double steps_per_strain = (w.state.step - shear_start_step) / test.shear_strain();
+        eta = fmt::format("  ETA {:.0f} s",
+                          (spec.shear.final_strain - test.shear_strain()) * steps_per_strain / rate);
+      }
+      fmt::print("  [{}] step {}  strain {:.4f}  stress ratio {:.3f}  sigma {:.1f} kPa  e {:.3f}  "
+                 "{:.0f} steps/s{}\n",
+                 shear_phase_name(phase), w.state.step, test.shear_strain(),
+                 test.normal_force() > 0 ? test.shear_force() / test.normal_force() : 0.0,
+                 test.normal_stress() * 1e-3, test.void_ratio(), rate, eta);
+      std::fflush(stdout);
+    }
+    if (since_checkpoint.seconds() > spec.output.checkpoint_interval) {
+      save();
+      since_checkpoint.reset();
+    }
+    if (g_stop_signal != 0) {
+      save();
+      fmt::print("stopped by signal {}: checkpoint saved in '{}'; continue with `grainlab run {} --resume`\n",
+                 g_stop_signal.load(), checkpoint.string(), o.use_defaults ? "--default" : o.file);
+      return 130;
+    }
+  }
+  save();
+  write_series(test, out);
+  write_run_json(test, out, clock.seconds());
+  const ShearSummary s = test.summary();
+  fmt::print("done in {:.0f} s: peak friction angle {:.1f} deg (stress ratio {:.3f}) at strain {:.3f}; "
+             "peak dilation angle {:.1f} deg\noutputs: {}/series.csv, {}/run.json, {}/checkpoint.bin\n",
+             clock.seconds(), s.peak_friction_angle_deg, s.peak_stress_ratio, s.strain_at_peak_friction,
+             s.peak_dilation_angle_deg, out.string(), out.string(), out.string());
+  return 0;
+}
+
+}  // namespace
+
+Command add_run_command(CLI::App& app) {
+  auto o = std::make_shared<RunOptions>();
+  auto* cmd = app.add_subcommand(
+      "run",
+      "run a virtual direct shear test from a TOML config: prepare a specimen at the target density, "
+      "consolidate under the servo-held normal stress, shear to the final strain. Writes series.csv "
+      "(one row per strain interval, SI units), run.json (inputs, achieved density, peaks) and "
+      "checkpoint.bin to output.folder");
+  cmd->add_option("file", o->file, "config file (TOML); see --print-defaults for every key with its unit");
+  cmd->add_flag("--print-defaults", o->print_defaults, "print a complete, commented default config and exit");
+  cmd->add_flag("--default", o->use_defaults, "run the embedded default (a small box of sub-angular grains)");
+  cmd->add_flag("--resume", o->resume, "continue from output.folder/checkpoint.bin (same config)");
+  cmd->add_flag("--quiet", o->quiet, "no progress lines");
+  return [cmd, o]() { return *cmd ? run(*o) : -1; };
+}
+
+}  // namespace grainlab::apps

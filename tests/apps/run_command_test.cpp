@@ -1,0 +1,97 @@
+// `grainlab run` refuses bad configs with a clear message, a non-zero exit,
+// and writes nothing.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Result {
+  int exit_code;
+  std::string output;
+};
+
+// Runs the grainlab binary with `args`, capturing stdout and stderr.
+Result grainlab(const std::string& args) {
+  const std::string cmd = std::string(GRAINLAB_BINARY) + " " + args + " 2>&1";
+  FILE* pipe = popen(cmd.c_str(), "r");
+  std::string out;
+  char buf[4096];
+  while (pipe && std::fgets(buf, sizeof(buf), pipe)) out += buf;
+  const int status = pipe ? pclose(pipe) : -1;
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+class RunCommand : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("grainlab-run-test-" + std::to_string(::getpid()) + "-" +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  // A config that sends its output into the test folder, plus `extra` lines.
+  fs::path config(const std::string& extra) {
+    const fs::path p = dir_ / "test.toml";
+    std::ofstream(p) << "[output]\nfolder = \"" << (dir_ / "out").string() << "\"\n" << extra;
+    return p;
+  }
+  bool wrote_nothing() const { return !fs::exists(dir_ / "out"); }
+
+  fs::path dir_;
+};
+
+TEST_F(RunCommand, PrintDefaultsPrintsEveryTable) {
+  const Result r = grainlab("run --print-defaults");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  // Every table, with units in the comments (io's tests check that it parses
+  // back to the defaults field by field).
+  for (const char* key : {"[grains]", "[material]", "[box]", "[specimen]", "[consolidation]", "[shear]",
+                          "[numerics]", "[output]", "normal_stress", "Pa", "seed"})
+    EXPECT_NE(r.output.find(key), std::string::npos) << key;
+}
+
+TEST_F(RunCommand, UnknownKeyIsNamedWithItsFile) {
+  const Result r = grainlab("run " + config("[consolidation]\nnormal_stres = 100e3\n").string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("normal_stres"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("normal_stress"), std::string::npos) << "should suggest the right key: " << r.output;
+  EXPECT_NE(r.output.find("test.toml"), std::string::npos) << r.output;
+  EXPECT_TRUE(wrote_nothing());
+}
+
+TEST_F(RunCommand, NegativeStressIsRefused) {
+  const Result r = grainlab("run " + config("[consolidation]\nnormal_stress = -5\n").string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("consolidation.normal_stress"), std::string::npos) << r.output;
+  EXPECT_TRUE(wrote_nothing());
+}
+
+TEST_F(RunCommand, StepAboveTheStableLimitIsRefused) {
+  const Result r = grainlab("run " + config("[grains]\nshapes = 2\nfaces = 200\n[numerics]\ntime_step = 1e-3\n").string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("critical"), std::string::npos) << r.output;
+  EXPECT_TRUE(wrote_nothing());
+}
+
+TEST_F(RunCommand, MissingMeshFolderIsRefused) {
+  const Result r = grainlab("run " + config("[grains]\nfolder = \"/no/such/scan/folder\"\n").string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("/no/such/scan/folder"), std::string::npos) << r.output;
+  EXPECT_TRUE(wrote_nothing());
+}
+
+TEST_F(RunCommand, MissingConfigFileIsRefused) {
+  const Result r = grainlab("run " + (dir_ / "nope.toml").string());
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.output.find("nope.toml"), std::string::npos) << r.output;
+}
+
+}  // namespace
