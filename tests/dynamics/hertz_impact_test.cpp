@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 using namespace grainlab;
 
@@ -74,6 +75,8 @@ TEST(HertzImpact, ElasticDurationMatchesClosedForm) {
   const double e_star = mat.youngs_modulus / (2 * (1 - mat.poisson_ratio * mat.poisson_ratio));
   const double expected = hertz_duration(0.5 * mass, 0.5 * r, e_star, v);
   const Impact got = simulate_impact(ContactLaw::HertzMaterial, mat, r, v, 400, expected);
+  std::printf("Hertz (material) contact duration: measured / closed form = %.5f, restitution %.5f\n",
+              got.duration / expected, got.restitution);
   EXPECT_NEAR(got.duration / expected, 1.0, 0.01);
   EXPECT_NEAR(got.restitution, 1.0, 0.01);
 }
@@ -104,6 +107,7 @@ TEST_P(HertzRestitution, MeasuredEqualsRequested) {
   for (double v : {0.05, 0.5}) {  // restitution must not depend on the speed
     const double t = hertz_duration(0.5 * mass, 0.5 * r, e_star, v);
     const Impact got = simulate_impact(ContactLaw::HertzMaterial, mat, r, v, 400, t);
+    std::printf("restitution requested %.2f at %.2f m/s: measured %.5f\n", mat.restitution, v, got.restitution);
     EXPECT_NEAR(got.restitution / mat.restitution, 1.0, 0.01) << "v = " << v;
   }
 }

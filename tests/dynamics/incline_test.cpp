@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 using namespace grainlab;
 
@@ -78,6 +79,7 @@ TEST(Incline, SlidesAboveFrictionAngleWithCoulombAcceleration) {
     const double theta = theta_deg * M_PI / 180;
     const Slide r = slide_block(theta, mu);
     const double expected = 9.81 * (std::sin(theta) - mu * std::cos(theta));
+    std::printf("incline %.0f deg, mu %.1f: acceleration %.4f m/s^2, Coulomb %.4f\n", theta_deg, mu, r.acceleration, expected);
     EXPECT_NEAR(r.acceleration / expected, 1.0, 0.02) << theta_deg << " deg";
   }
 }
