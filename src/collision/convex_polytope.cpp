@@ -41,6 +41,66 @@ ConvexPolytope::ConvexPolytope(std::vector<Vec3> vertices,
     if (!v.allFinite()) input_error("ConvexPolytope: a vertex is not finite (NaN or infinity)");
     bounding_radius_ = std::max(bounding_radius_, v.norm());
   }
+  build_planes();
+}
+
+// A plane through vertex u and two of its neighbours v, w is a face plane if
+// it supports the polytope (no vertex beyond it): checked by a hill climb from
+// u, exact on a convex polytope. Every vertex of a face finds that face from
+// its two neighbours along the face boundary, so each vertex lists all its
+// faces. Planes equal within rounding are stored once.
+void ConvexPolytope::build_planes() {
+  const Index n = static_cast<Index>(vertices_.size());
+  plane_offsets_.assign(1, 0);
+  if (n < 4) {
+    plane_offsets_.assign(n + 1, 0);
+    return;
+  }
+  const double tol = 1e-9 * std::max(bounding_radius_, 1e-300);
+  std::vector<Index> mine;
+  for (Index u = 0; u < n; ++u) {
+    mine.clear();
+    const Vec3& pu = vertices_[u];
+    for (Index i = offsets_[u]; i < offsets_[u + 1]; ++i) {
+      for (Index j = i + 1; j < offsets_[u + 1]; ++j) {
+        const Vec3 e1 = vertices_[adjacency_[i]] - pu, e2 = vertices_[adjacency_[j]] - pu;
+        Vec3 m = e1.cross(e2);
+        const double len = m.norm();
+        if (!(len > 1e-12 * e1.norm() * e2.norm())) continue;
+        m /= len;
+        for (int sign = 0; sign < 2; ++sign, m = -m) {
+          const double c = m.dot(pu);
+          const Index s = support_index(m, u);
+          if (vertices_[s].dot(m) - c > tol) continue;
+          bool dup = false;
+          for (const Index k : mine)
+            if (planes_[k].m.dot(m) > 1 - 1e-9 && std::abs(planes_[k].c - c) < 1e3 * tol) dup = true;
+          if (dup) break;
+          // Shared with a neighbour that found it first?
+          Index found = -1;
+          for (Index a = offsets_[u]; a < offsets_[u + 1] && found < 0; ++a) {
+            const Index nb = adjacency_[a];
+            if (nb > u) continue;
+            for (Index q = plane_offsets_[nb]; q < plane_offsets_[nb + 1]; ++q) {
+              const Plane& P = planes_[vertex_planes_[q]];
+              if (P.m.dot(m) > 1 - 1e-9 && std::abs(P.c - c) < 1e3 * tol) {
+                found = vertex_planes_[q];
+                break;
+              }
+            }
+          }
+          if (found < 0) {
+            found = static_cast<Index>(planes_.size());
+            planes_.push_back({m, c});
+          }
+          mine.push_back(found);
+          break;
+        }
+      }
+    }
+    vertex_planes_.insert(vertex_planes_.end(), mine.begin(), mine.end());
+    plane_offsets_.push_back(static_cast<Index>(vertex_planes_.size()));
+  }
 }
 
 Index ConvexPolytope::support_index(const Vec3& d, Index start) const {

@@ -258,8 +258,9 @@ bool Epa::expand(int closest, int wi) {
 // warm (last step's normal of this pair) and it concludes; GJK/EPA otherwise.
 ContactResult collide_convex(const PolytopeShape& a, const PolytopeShape& b, Vec3& dir, bool warm) {
   ContactResult r;
-  if (warm && warm_penetration(a, b, dir, r)) return r;
-  return gjk_epa(a, b, dir);
+  if (!(warm && warm_penetration(a, b, dir, r))) r = gjk_epa(a, b, dir);
+  contact_patch(a, b, r);
+  return r;
 }
 ContactResult collide_convex(const BoxShape& a, const PolytopeShape& b, Vec3& dir, bool warm) {
   ContactResult r;

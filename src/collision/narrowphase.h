@@ -22,8 +22,18 @@ ContactResult collide(const PlaneShape& a, const PolytopeShape& b);
 // `warm` says dir is this pair's normal from the previous step: then a
 // shallow penetration is found by the local translated-GJK iteration
 // (penetration.h), several times cheaper than EPA; cold calls use EPA.
+// The contact point of a touching polytope pair is not the witness point but
+// the patch centroid of contact_patch below (with ContactResult::spread).
 ContactResult collide_convex(const PolytopeShape& a, const PolytopeShape& b, Vec3& dir, bool warm = false);
 ContactResult collide_convex(const SphereShape& a, const PolytopeShape& b, Vec3& dir);
+
+// For touching polytopes A, B with r's normal: replaces r.point by the centroid
+// of the vertices of each body lying inside the other, weighted by their depth
+// inside it (continuous in the configuration: a vertex entering the overlap
+// has weight 0), moved to halfway between the two supporting planes, and sets
+// r.spread to their weighted tangential variance about it. Keeps the witness
+// point if no vertex lies inside the other body (e.g. edge across edge).
+void contact_patch(const PolytopeShape& a, const PolytopeShape& b, ContactResult& r);
 ContactResult collide_convex(const BoxShape& a, const PolytopeShape& b, Vec3& dir, bool warm = false);
 ContactResult collide_convex(const BoxShape& a, const SphereShape& b, Vec3& dir);
 

@@ -31,11 +31,28 @@ class ConvexPolytope {
   const Index* neighbours_end(Index v) const { return adjacency_.data() + offsets_[v + 1]; }
   double bounding_radius() const { return bounding_radius_; }  // max |v| in the local frame
 
+  // Face planes (outward unit normal m, offset c: inside is m.x <= c), found
+  // from the vertex graph at construction, coplanar triangles merged. Each
+  // vertex lists the planes through it. Used to measure how deep a point lies
+  // inside the polytope near a contact (patch.cpp).
+  struct Plane {
+    Vec3 m;
+    double c;
+  };
+  const std::vector<Plane>& planes() const { return planes_; }
+  const Index* planes_begin(Index v) const { return vertex_planes_.data() + plane_offsets_[v]; }
+  const Index* planes_end(Index v) const { return vertex_planes_.data() + plane_offsets_[v + 1]; }
+
  private:
+  void build_planes();
+
   std::vector<Vec3> vertices_;
   std::vector<Index> offsets_;
   std::vector<Index> adjacency_;
   double bounding_radius_ = 0;
+  std::vector<Plane> planes_;
+  std::vector<Index> plane_offsets_;
+  std::vector<Index> vertex_planes_;
 };
 
 // A ConvexPolytope placed in the world: p_world = pos + rot * (scale * p_local).
