@@ -6,6 +6,7 @@
 #include "collision/penetration.h"
 
 #include <algorithm>
+#include <limits>
 
 namespace grainlab {
 namespace gjk_detail {
@@ -262,10 +263,28 @@ ContactResult collide_convex(const PolytopeShape& a, const PolytopeShape& b, Vec
   contact_patch(a, b, r);
   return r;
 }
+// A box wall against a grain: GJK/EPA (or the warm path) for depth and
+// normal. When the normal is one of the box's face normals (a grain pressed on
+// a face of the slab, the usual case), the contact point and patch spread come
+// from the exact plane routine for that face: its depth-weighted point is
+// continuous, so a flat grain face resting on the slab does not jitter as the
+// GJK witness would. Edge and corner contacts keep the witness point.
 ContactResult collide_convex(const BoxShape& a, const PolytopeShape& b, Vec3& dir, bool warm) {
   ContactResult r;
-  if (warm && warm_penetration(a, b, dir, r)) return r;
-  return gjk_epa(a, b, dir);
+  if (!(warm && warm_penetration(a, b, dir, r))) r = gjk_epa(a, b, dir);
+  if (!r.touching) return r;
+  for (int axis = 0; axis < 3; ++axis) {
+    const double c = r.normal.dot(a.rot.col(axis));
+    if (std::abs(c) < 1 - 1e-9) continue;
+    const Vec3 n = (c > 0 ? 1.0 : -1.0) * a.rot.col(axis);
+    const ContactResult face = collide(PlaneShape{a.pos + a.half[axis] * n, n}, b);
+    if (face.touching) {
+      r.point = face.point;
+      r.spread = face.spread;
+    }
+    break;
+  }
+  return r;
 }
 ContactResult collide_convex(const BoxShape& a, const SphereShape& b, Vec3& dir) {
   return gjk_epa(a, b, dir);

@@ -213,9 +213,13 @@ bool DirectShearTest::at_rest(bool check_stress) const {
   const double sigma = spec_.consolidation.normal_stress;
   if (check_stress && std::abs(normal_stress() / sigma - 1) > spec_.consolidation.tolerance) return false;
   if (unbalanced_force_ratio() > spec_.consolidation.max_unbalanced) return false;
-  // Kinetic energy small against the work of moving every grain 1e-4 d under the stress.
-  const double scale = sigma * mean_diameter_ * mean_diameter_ * 1e-4 * mean_diameter_;
-  return world_.kinetic_energy() < scale * world_.model.bodies.size() * 1e-3;
+  // Kinetic energy small against the elastic energy stored in the contacts
+  // (Hertz: (2/5) f delta per contact).
+  double elastic = 0;
+  for (const auto* list : {&world_.state.pairs, &world_.state.wall_pairs})
+    for (const PairContact& pc : *list)
+      if (pc.geo.touching) elastic += 0.4 * pc.normal_force * pc.geo.depth;
+  return world_.kinetic_energy() < 1e-2 * elastic;
 }
 
 bool DirectShearTest::advance(int max_steps) {

@@ -53,7 +53,8 @@ struct SpecimenSpec {
   double e_min = 0.53;
   double void_ratio = -1;          // if > 0: target void ratio, overrides Dr
   double tolerance = 0.02;         // accepted |e - e_target|
-  double deposition_friction = 0.0;  // inter-grain friction while raining and compacting (lower: denser)
+  double deposition_friction = 0.05; // inter-grain friction while raining and compacting (lower: denser;
+                                     // frictionless grains of these shapes never come to rest)
 };
 
 struct ConsolidationSpec {
