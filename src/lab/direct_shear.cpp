@@ -106,10 +106,10 @@ DirectShearTest::DirectShearTest(const DirectShearSpec& spec) : spec_(spec) {
   }
   fill_top_ = (count / (nx * ny) + 1) * pitch + pitch;
 
-  // Density scaling: automatic = the largest that keeps the deposition honest
-  // is not needed; inertia scaling does not change the number of shear steps at
-  // a fixed inertial number (both dt and the speed grow with sqrt(S)), so the
-  // default is moderate: S = 100.
+  // Density scaling (automatic: S = 100). At a fixed inertial number it does
+  // not change the number of shear steps (dt and the shear speed both grow
+  // with sqrt(S)); it shortens deposition and consolidation, which last a
+  // fixed simulated time.
   m.density_scale = spec.numerics.density_scaling > 0 ? spec.numerics.density_scaling : 100.0;
   m.rescale_bodies();
   build_walls();
