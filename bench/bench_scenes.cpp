@@ -36,8 +36,10 @@ void run_scene(const char* label, SettlingBedSpec spec, int settle, int steps) {
     for (int i = 0; i < steps; ++i) run.step(dt);
     const double el = clock.seconds();
     const double gs = steps * double(run.model.bodies.size()) / el;
-    fmt::print("  {} thread{}: {:>10.0f} grain-steps/s  ({:.2f} ms/step, {} broadphase rebuilds)\n",
-               threads, threads > 1 ? "s" : " ", gs, 1e3 * el / steps, run.profile.broadphase_rebuilds);
+    fmt::print("  {} thread{}: {:>10.0f} grain-steps/s  ({:.2f} ms/step, {} broadphase rebuilds, "
+               "{:.0f} narrowphase pair tests and {:.0f} contacts per step)\n",
+               threads, threads > 1 ? "s" : " ", gs, 1e3 * el / steps, run.profile.broadphase_rebuilds,
+               double(run.profile.pair_tests) / steps, double(run.profile.contacts) / steps);
     fmt::print("     phase ms/step:");
     for (int p = 0; p < static_cast<int>(Phase::Count); ++p)
       fmt::print(" {} {:.3f}", kPhaseNames[p], 1e3 * run.profile.seconds[p] / steps);

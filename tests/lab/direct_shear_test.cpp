@@ -2,10 +2,10 @@
 // for bit like the uninterrupted one.
 #include "io/checkpoint.h"
 #include "lab/direct_shear.h"
+#include "state_compare.h"
 
 #include <gtest/gtest.h>
 
-#include <cstring>
 
 using namespace grainlab;
 
@@ -21,18 +21,6 @@ DirectShearSpec tiny_spec() {
   spec.grains.faces = 120;
   spec.seed = 5;
   return spec;
-}
-
-bool same_bits(const State& a, const State& b) {
-  const auto eq = [](const auto& x, const auto& y) { return std::memcmp(x.data(), y.data(), sizeof(x)) == 0; };
-  if (a.bodies.size() != b.bodies.size() || a.pairs.size() != b.pairs.size() || a.step != b.step) return false;
-  for (std::size_t i = 0; i < a.bodies.size(); ++i) {
-    const BodyState &p = a.bodies[i], &q = b.bodies[i];
-    if (!eq(p.x, q.x) || !eq(p.v, q.v) || !eq(p.w, q.w) || !eq(p.q.coeffs(), q.q.coeffs())) return false;
-  }
-  for (std::size_t k = 0; k < a.walls.size(); ++k)
-    if (!eq(a.walls[k].x, b.walls[k].x) || !eq(a.walls[k].v, b.walls[k].v)) return false;
-  return true;
 }
 
 }  // namespace
@@ -52,7 +40,7 @@ TEST(DirectShear, CheckpointRestoreContinuesBitForBit) {
   for (int i = 0; i < 4; ++i) b.advance(250);
 
   EXPECT_EQ(a.phase(), b.phase());
-  EXPECT_TRUE(same_bits(a.world().state, b.world().state));
+  EXPECT_TRUE(testing_support::same_state_bits(a.world().state, b.world().state));
   EXPECT_EQ(a.series(), b.series());
 }
 
