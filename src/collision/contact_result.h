@@ -7,7 +7,8 @@ namespace grainlab {
 
 struct ContactResult {
   bool touching = false;  // shapes overlap (depth > 0)
-  double depth = 0;       // overlap if touching, else minus the separation distance (m)
+  double depth = 0;       // overlap if touching, else minus the separation distance, or a lower
+                          // bound of it for shapes found far apart (penetration.h) (m)
   Vec3 normal = Vec3::UnitZ();  // unit, points from A towards B: moving B by depth*normal separates them
   Vec3 point = Vec3::Zero();    // contact point, midway between the two surfaces (m)
   // Spread of an extended contact patch: the depth-weighted mean squared
