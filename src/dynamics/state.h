@@ -46,6 +46,10 @@ struct PairContact {
   }
 };
 
+// A pair is a contact when its shapes overlap this step. The one criterion for
+// "in contact": World's contact counters and the analysis layer use it.
+inline bool in_contact(const PairContact& pc) { return pc.geo.touching; }
+
 struct State {
   double time = 0;        // s
   std::int64_t step = 0;

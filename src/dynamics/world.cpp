@@ -389,8 +389,8 @@ void World::bookkeeping() {
   double ke = 0;
   for (double k : kinetic_) ke += k;
   std::size_t touching = 0;
-  for (const PairContact& pc : state.pairs) touching += pc.geo.touching;
-  for (const PairContact& pc : state.wall_pairs) touching += pc.geo.touching;
+  for (const PairContact& pc : state.pairs) touching += in_contact(pc);
+  for (const PairContact& pc : state.wall_pairs) touching += in_contact(pc);
   profile.contacts += static_cast<std::int64_t>(touching);
   if (!std::isfinite(ke)) {
     for (std::size_t i = 0; i < state.bodies.size(); ++i) {
@@ -412,8 +412,8 @@ double World::kinetic_energy() const {
 
 std::size_t World::contact_count() const {
   std::size_t n = 0;
-  for (const PairContact& pc : state.pairs) n += pc.geo.touching;
-  for (const PairContact& pc : state.wall_pairs) n += pc.geo.touching;
+  for (const PairContact& pc : state.pairs) n += in_contact(pc);
+  for (const PairContact& pc : state.wall_pairs) n += in_contact(pc);
   return n;
 }
 
