@@ -1,0 +1,293 @@
+#!/usr/bin/python3
+"""Fabricate a plausible grainlab direct shear run folder, for testing scripts/report.py.
+
+    /usr/bin/python3 scripts/make_fake_run.py OUT_DIR [--preset CLASS] [--seed N]
+                                             [--no-analysis] [--no-roundness]
+
+Writes exactly the files of the run-folder contract that report.py reads
+(see the docstring of scripts/report.py):
+
+    OUT_DIR/series.csv                 one row per 0.1 % of shear strain, 0 .. 10 %
+    OUT_DIR/run.json                   config, preparation, peaks, final, timings
+    OUT_DIR/analysis/profile.csv       z_m, displacement_x_m, count
+    OUT_DIR/analysis/band.json         low_m, high_m, method
+    OUT_DIR/analysis/fabric.json       phi, D2, D4, principal_values, psi, normals (all, band)
+    OUT_DIR/analysis/force_chains.csv  x1_m .. z2_m, force_N
+
+Nothing here is simulated. The curves are synthetic but shaped like the
+paper's (He, Zheng & Schaefer 2021, Figs. 10-17): the stress ratio rises to a
+peak and softens, the cap contracts a little then dilates, angular grains are
+stronger and dilate more than round ones. Grain centres are placed at random
+(non-overlapping) in the box; contacts join close pairs and are kept with a
+probability that favours the compression diagonal of the shear, so that the
+contact normals and the strong forces are anisotropic as in Figs. 15 and 17.
+The fabric tensors in fabric.json are computed from those normals with
+Kanatani's coefficients (D_ij = 15/2 dev phi_ij, D_ijkl = 315/8 (...)).
+
+Coordinates are in the engine's world frame: x along the shear (box centred
+on x = 0), y across, z up from the box floor; the shear plane is at z = H/2.
+Only the Python standard library and numpy are used.
+"""
+
+import argparse
+import csv
+import json
+import math
+import sys
+from pathlib import Path
+
+import numpy as np
+
+# Per grain class: peak and residual F/N, strain at peak, final dilation (m),
+# mean rotation at 10 % (deg), initial coordination number, mean roundness.
+PRESETS = {
+    "angular":     dict(r_peak=0.86, r_res=0.64, eps_peak=0.040, dv_end=0.21e-3, rot_end=6.0,  cn0=5.2, R=0.32, mu=0.28),
+    "sub-angular": dict(r_peak=0.74, r_res=0.58, eps_peak=0.032, dv_end=0.18e-3, rot_end=8.0,  cn0=5.5, R=0.52, mu=0.19),
+    "rounded":     dict(r_peak=0.62, r_res=0.52, eps_peak=0.026, dv_end=0.12e-3, rot_end=10.0, cn0=5.8, R=0.74, mu=0.19),
+    "glass-beads": dict(r_peak=0.50, r_res=0.44, eps_peak=0.020, dv_end=0.07e-3, rot_end=12.0, cn0=6.1, R=0.89, mu=0.12),
+}
+
+SAND_OF = {"angular": "crushed-limestone", "sub-angular": "griffin", "rounded": "ottawa", "glass-beads": "glass-beads"}
+
+L, W, H, GAP = 8.5e-3, 8.5e-3, 6.0e-3, 0.3e-3
+D_MEAN = 0.774e-3
+SIGMA_N = 100e3
+
+
+def peak_shape(eps, eps_peak):
+    """Rises from 0 to 1 at eps_peak, then decays slowly (x e^(1-x) shape, flattened)."""
+    x = np.maximum(eps, 0) / eps_peak
+    return np.where(x < 1, 1 - np.maximum(1 - x, 0) ** 2.2, np.exp(-0.9 * np.maximum(x - 1, 0) ** 1.3 / (1 + 0.3 * (x - 1))))
+
+
+def kanatani(normals):
+    """phi_ij, phi_ijkl, D_ij, D_ijkl from unit normals (Eqs. 24-28, Kanatani's coefficients)."""
+    n = np.asarray(normals, float)
+    phi2 = np.einsum("ai,aj->ij", n, n) / len(n)
+    phi4 = np.einsum("ai,aj,ak,al->ijkl", n, n, n, n) / len(n)
+    d = np.eye(3)
+    d2 = 7.5 * (phi2 - d / 3)
+    # Fully symmetrised delta_ij phi_kl and delta_ij delta_kl.
+    sym_dphi = (np.einsum("ij,kl->ijkl", d, phi2) + np.einsum("ik,jl->ijkl", d, phi2)
+                + np.einsum("il,jk->ijkl", d, phi2) + np.einsum("jk,il->ijkl", d, phi2)
+                + np.einsum("jl,ik->ijkl", d, phi2) + np.einsum("kl,ij->ijkl", d, phi2)) / 6
+    sym_dd = (np.einsum("ij,kl->ijkl", d, d) + np.einsum("ik,jl->ijkl", d, d)
+              + np.einsum("il,jk->ijkl", d, d)) / 3
+    d4 = 315 / 8 * (phi4 - 6 / 7 * sym_dphi + 3 / 35 * sym_dd)
+    return phi2, d2, d4
+
+
+def psi_of(phi2):
+    p = np.linalg.eigvalsh(phi2)[::-1]
+    return p, math.sqrt(((p[0] - p[1]) ** 2 + (p[0] - p[2]) ** 2 + (p[1] - p[2]) ** 2) / 2)
+
+
+def fabric_entry(normals):
+    phi2, d2, d4 = kanatani(normals)
+    p, psi = psi_of(phi2)
+    return {"phi": phi2.tolist(), "D2": d2.tolist(), "D4": d4.tolist(),
+            "principal_values": p.tolist(), "psi": psi,
+            "normals": [[round(float(c), 6) for c in v] for v in normals]}
+
+
+def place_grains(rng, count):
+    """Random sequential placement of non-overlapping spheres of ~D_MEAN in the box."""
+    lo = np.array([-L / 2 + D_MEAN / 2, -W / 2 + D_MEAN / 2, D_MEAN / 2])
+    hi = np.array([L / 2 - D_MEAN / 2, W / 2 - D_MEAN / 2, H - D_MEAN / 2])
+    pts = np.empty((0, 3))
+    tries = 0
+    while len(pts) < count and tries < 60 * count:
+        tries += 1
+        p = lo + rng.random(3) * (hi - lo)
+        if len(pts) and np.min(np.sum((pts - p) ** 2, axis=1)) < (0.75 * D_MEAN) ** 2:
+            continue
+        pts = np.vstack([pts, p])
+    return pts
+
+
+def make_contacts(rng, centres, axis, band, strength):
+    """Close pairs, kept with a probability that favours normals along `axis`."""
+    diff = centres[:, None, :] - centres[None, :, :]
+    dist = np.linalg.norm(diff, axis=2)
+    i, j = np.nonzero(np.triu(dist < 1.4 * D_MEAN, 1))
+    n = (centres[j] - centres[i]) / dist[i, j][:, None]
+    align = (n @ axis) ** 2
+    mid_z = 0.5 * (centres[i, 2] + centres[j, 2])
+    in_band = (mid_z >= band[0]) & (mid_z <= band[1])
+    # Keep probability 0.25 .. 1, peaked along the axis (align^3 keeps the lobes narrow);
+    # the band's contacts are more anisotropic than the rest.
+    bias = np.where(in_band, 1.0, 0.45) * strength
+    keep = rng.random(len(i)) < 0.25 + 0.75 * bias * align ** 3
+    i, j, n, align, in_band = i[keep], j[keep], n[keep], align[keep], in_band[keep]
+    # Mean contact force from the normal stress: sigma * area / (contacts per area); the
+    # shape is exponential, and the strong forces line up with the compression diagonal.
+    f_mean = SIGMA_N * D_MEAN ** 2 * 1.6
+    force = f_mean * rng.exponential(1.0, len(i)) * (0.35 + 1.6 * align ** 2)
+    return i, j, n, force, in_band
+
+
+def write_csv(path, header, rows):
+    with open(path, "w", newline="") as fh:
+        w = csv.writer(fh, lineterminator="\n")
+        w.writerow(header)
+        for r in rows:
+            w.writerow([repr(float(v)) for v in r])
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("out", help="run folder to create (created if missing; files overwritten)")
+    ap.add_argument("--preset", default="sub-angular", choices=sorted(PRESETS), help="grain class")
+    ap.add_argument("--seed", type=int, default=1)
+    ap.add_argument("--no-analysis", action="store_true",
+                    help="write only series.csv (without the analysis columns) and run.json")
+    ap.add_argument("--no-roundness", action="store_true", help="leave mean_roundness out of run.json")
+    a = ap.parse_args(argv)
+
+    P = PRESETS[a.preset]
+    rng = np.random.default_rng(a.seed)
+    out = Path(a.out)
+    out.mkdir(parents=True, exist_ok=True)
+
+    # ---- series.csv -------------------------------------------------------
+    eps = np.round(np.arange(0, 0.1000001, 0.001), 6)
+    noise = lambda s: s * rng.standard_normal(len(eps))
+    time = 0.05 + eps * L / 0.01
+    dh = eps * L
+    ratio = P["r_res"] * (1 - np.exp(-eps / 0.006)) + (P["r_peak"] - P["r_res"] * (1 - np.exp(-P["eps_peak"] / 0.006))) * peak_shape(eps, P["eps_peak"])
+    ratio = np.maximum(ratio + noise(0.008), 0)
+    ratio[0] = 0.0
+    # Cap: a small contraction, then dilation that flattens towards the end.
+    dv = (P["dv_end"] * (1 / (1 + np.exp(-(eps - 0.035) / 0.02)) - 1 / (1 + np.exp(0.035 / 0.02)))
+          - 0.02e-3 * (1 - np.exp(-eps / 0.004)))
+    dv = dv + noise(0.0005e-3)
+    dv[0] = 0.0
+    normal_force = SIGMA_N * L * W * (1 + noise(0.004))
+    shear_force = ratio * normal_force
+    stress = normal_force / (L * W)
+    phi_deg = np.degrees(np.arctan(ratio))
+    e_target = 0.86 - 0.96 * (0.86 - 0.53)
+    e0 = e_target + 0.008 * rng.standard_normal()
+    void = e0 + dv / (H - 0.0) * (1 + e0)
+    cn = P["cn0"] - 0.9 * (1 - np.exp(-eps / 0.02)) + noise(0.02)
+    ke = 1e-9 * (1 + 3 * np.abs(noise(1)))
+    unb = 0.01 + 0.01 * np.abs(noise(1))
+    inertial = 6e-4 * (1 + noise(0.03))
+
+    cols = ["time_s", "shear_strain", "horizontal_displacement_m", "vertical_displacement_m",
+            "shear_force_N", "normal_force_N", "normal_stress_Pa", "stress_ratio",
+            "friction_angle_deg", "void_ratio", "coordination_number", "kinetic_energy_J",
+            "unbalanced_force_ratio", "inertial_number"]
+    data = [time, eps, dh, dv, shear_force, normal_force, stress, ratio, phi_deg, void, cn, ke, unb, inertial]
+
+    # Shear band: widens from the gap to a few grain diameters, centred on the shear plane.
+    z_plane = H / 2
+    half_width = 0.5 * GAP + 2.2 * D_MEAN * (1 - np.exp(-eps / 0.015))
+    band_low, band_high = z_plane - half_width, z_plane + half_width
+    final_band = (float(band_low[-1]), float(band_high[-1]))
+
+    if not a.no_analysis:
+        growth = 1 - np.exp(-eps / 0.03)
+        rot_all = P["rot_end"] * growth / (1 - math.exp(-0.1 / 0.03)) + np.abs(noise(0.05))
+        rot_band = 2.0 * rot_all + np.abs(noise(0.1))
+        cn_band = cn + 0.35 + noise(0.03)
+        cols += ["rotation_mean_deg", "rotation_band_deg", "coordination_number_band"]
+        data += [rot_all, rot_band, cn_band]
+
+    # ---- grains, contacts, fabric ------------------------------------------
+    centres = place_grains(rng, 1000)
+    tilt = math.radians(40 + 15 * (1 - P["R"]))  # compression diagonal, tilted from vertical towards -x
+    axis = np.array([-math.sin(tilt), 0.0, math.cos(tilt)])
+    strength = min(1.0, 1.25 - 0.6 * P["R"])  # angular grains: more anisotropic fabric
+    i, j, normals, force, in_band = make_contacts(rng, centres, axis, final_band, strength)
+    fab_all = fabric_entry(normals)
+    fab_band = fabric_entry(normals[in_band])
+
+    if not a.no_analysis:
+        # Psi rises from near isotropic to a peak, then eases to the final fabric's value.
+        x = eps / (1.2 * P["eps_peak"])
+        shape = 1 - np.exp(-eps / 0.012) + 0.3 * x * np.exp(1 - x)
+        psi_all = 0.02 + (fab_all["psi"] - 0.02) * shape / shape[-1]
+        psi_band = 0.03 + (fab_band["psi"] - 0.03) * shape / shape[-1]
+        psi_band[0] = float("nan")  # no band before shear starts: the C++ may write nan
+        cols += ["fabric_psi", "fabric_psi_band", "band_low_m", "band_high_m"]
+        data += [psi_all, psi_band, band_low, band_high]
+
+    write_csv(out / "series.csv", cols, np.column_stack(data))
+
+    # ---- run.json -----------------------------------------------------------
+    k_peak = int(np.argmax(ratio))
+    dil = np.zeros(len(eps))
+    for k in range(len(eps)):
+        lo, hi = max(0, k - 2), min(len(eps) - 1, k + 2)
+        dil[k] = math.degrees(math.atan((dv[hi] - dv[lo]) / (dh[hi] - dh[lo])))
+    k_dil = int(np.argmax(dil))
+    tail = eps >= 0.9 * eps[-1]
+    dt = 2.4e-7
+    run = {
+        "grainlab_version": "0.1.0",
+        "config": {
+            "seed": a.seed,
+            "grains": {"preset": a.preset, "folder": "", "shapes": 24, "faces": 500,
+                       "d_min": 0.707e-3, "d_max": 0.841e-3},
+            "material": {"preset": SAND_OF[a.preset], "contact_law": "hertz-material", "density": 2650.0,
+                         "friction": P["mu"], "youngs_modulus": 4e9, "poisson_ratio": 0.3,
+                         "restitution": 0.5, "k_n": 1e12, "k_t": 8e11, "gamma_n": 40.0, "gamma_t": 20.0,
+                         "wall_friction": 0.0},
+            "box": {"length": L, "width": W, "height": H, "gap": GAP},
+            "specimen": {"relative_density": 0.96, "e_max": 0.86, "e_min": 0.53, "void_ratio": -1.0,
+                         "tolerance": 0.02, "deposition_friction": 0.05},
+            "consolidation": {"normal_stress": SIGMA_N, "tolerance": 0.01, "max_unbalanced": 0.1},
+            "shear": {"speed": 0.0, "final_strain": 0.1},
+            "numerics": {"time_step": 0.0, "time_step_fraction": 0.2, "density_scaling": 0.0,
+                         "inertial_number": 1e-3, "threads": 0},
+            "output": {"folder": str(out), "strain_interval": 0.001, "checkpoint_interval": 60.0},
+        },
+        "seed": a.seed,
+        "grains": int(len(centres)),
+        "time_step_s": dt,
+        "density_scaling": 100.0,
+        "shear_speed_m_per_s": 0.01,
+        "mean_equivalent_diameter_m": D_MEAN,
+        "mean_roundness": P["R"],
+        "preparation": {"void_ratio": float(e0), "relative_density": float((0.86 - e0) / (0.86 - 0.53)),
+                        "target_void_ratio": e_target},
+        "peaks": {"friction_angle_deg": float(phi_deg[k_peak]), "strain_at_peak_friction": float(eps[k_peak]),
+                  "stress_ratio": float(ratio[k_peak]), "dilation_angle_deg": float(dil[k_dil]),
+                  "strain_at_peak_dilation": float(eps[k_dil])},
+        "final": {"friction_angle_deg": float(np.mean(phi_deg[tail])),
+                  "dilation_angle_deg": float(np.mean(dil[tail])), "void_ratio": float(void[-1])},
+        "timings": {"wall_s": 3600.0 * (1.5 + rng.random()), "steps": int(time[-1] / dt),
+                    "simulated_s": float(time[-1])},
+    }
+    if a.no_roundness:
+        del run["mean_roundness"]
+    if not a.no_analysis:
+        run["peaks"]["fabric_psi"] = float(np.nanmax(data[cols.index("fabric_psi")]))
+    (out / "run.json").write_text(json.dumps(run, indent=2) + "\n")
+
+    if a.no_analysis:
+        return 0
+
+    # ---- analysis/ ----------------------------------------------------------
+    an = out / "analysis"
+    an.mkdir(exist_ok=True)
+    edges = np.arange(0.0, H + 1e-12, D_MEAN / 2)
+    zc = 0.5 * (edges[:-1] + edges[1:])
+    w = 0.55 * (final_band[1] - final_band[0]) / 4
+    disp = dh[-1] / (1 + np.exp(-(zc - z_plane) / w)) + 0.01e-3 * rng.standard_normal(len(zc))
+    counts = np.array([np.sum((centres[:, 2] >= a_) & (centres[:, 2] < b_)) for a_, b_ in zip(edges[:-1], edges[1:])])
+    write_csv(an / "profile.csv", ["z_m", "displacement_x_m", "count"],
+              [(z, d, c) for z, d, c in zip(zc, disp, counts) if c > 0])
+    (an / "band.json").write_text(json.dumps(
+        {"low_m": final_band[0], "high_m": final_band[1],
+         "method": "synthetic: fake run (layers whose displacement is between 10 % and 90 % of the box's)"},
+        indent=2) + "\n")
+    (an / "fabric.json").write_text(json.dumps({"all": fab_all, "band": fab_band}) + "\n")
+    write_csv(an / "force_chains.csv", ["x1_m", "y1_m", "z1_m", "x2_m", "y2_m", "z2_m", "force_N"],
+              np.column_stack([centres[i], centres[j], force]))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

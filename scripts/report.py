@@ -1,0 +1,1100 @@
+#!/usr/bin/python3
+"""The grainlab run report: HTML and PNG figures for direct shear runs (paper Figs. 10-17).
+
+Usage (Debian's Python, which has matplotlib and numpy):
+
+    /usr/bin/python3 scripts/report.py RUN_DIR                 # -> RUN_DIR/report/index.html
+    /usr/bin/python3 scripts/report.py RUN_A RUN_B [...]       # -> RUN_A/../comparison/report/index.html
+    /usr/bin/python3 scripts/report.py RUN_DIR [...] --out DIR # -> DIR/index.html
+
+One run folder gives a report of that run; several give a comparison report
+that overlays their curves and tabulates their peaks against their mean grain
+roundness. The page works offline: inline CSS, no JavaScript, relative links
+to the PNGs written next to it. The figures mirror He, Zheng & Schaefer (2021),
+"Simulating shearing behavior of realistic granular soils using physics
+engine", Figs. 10-17.
+
+Input contract (what a run folder holds; SI units everywhere)
+--------------------------------------------------------------
+Required (the script stops with a one-line message and exit status 1 without them):
+
+  series.csv   header row of column names, then one row of numbers per sample
+               during shear ("nan" allowed). Columns are used by name; the
+               first ten are always written by the engine:
+                 time_s, shear_strain, horizontal_displacement_m,
+                 vertical_displacement_m (cap, up = dilation = positive),
+                 shear_force_N, normal_force_N, normal_stress_Pa, stress_ratio,
+                 friction_angle_deg, void_ratio
+               and may follow (each optional):
+                 coordination_number, kinetic_energy_J, unbalanced_force_ratio,
+                 inertial_number, rotation_mean_deg, rotation_band_deg,
+                 coordination_number_band, fabric_psi, fabric_psi_band,
+                 band_low_m, band_high_m
+  run.json     {"grainlab_version", "config": {grains, material, box, specimen,
+               consolidation, shear, numerics, output: {key: scalar}}, "seed",
+               "grains" (count), "time_step_s", "density_scaling",
+               "shear_speed_m_per_s", "mean_equivalent_diameter_m",
+               "mean_roundness" (optional), "preparation": {"void_ratio",
+               "relative_density", "target_void_ratio"}, "peaks":
+               {"friction_angle_deg", "strain_at_peak_friction", "stress_ratio",
+               "dilation_angle_deg", "strain_at_peak_dilation", "fabric_psi"
+               (optional)}, "final": {"friction_angle_deg", "dilation_angle_deg",
+               "void_ratio"}, "timings": {"wall_s", "steps", "simulated_s"}}
+
+Optional (a figure whose input is missing is replaced by a visible
+"not available: FILE missing" note):
+
+  analysis/profile.csv       z_m, displacement_x_m, count: final mean horizontal
+                             grain displacement since the start of shear per layer
+  analysis/band.json         {"low_m", "high_m", "method"}: the final shear band
+  analysis/fabric.json       {"all": {...}, "band": {...}}, each with "phi" (3x3),
+                             "D2" (3x3), "D4" (3x3x3x3), "principal_values" (3),
+                             "psi", "normals" ([[nx, ny, nz], ...], one per contact)
+  analysis/force_chains.csv  x1_m, y1_m, z1_m, x2_m, y2_m, z2_m, force_N: one
+                             grain-grain contact per row, between grain centres
+
+Frames and conventions the figures assume: x is the shear direction, z is up;
+heights (profile z_m, band_low_m/high_m, band.json, force-chain z) are in the
+engine's world frame with the box floor at z = 0, so the shear plane (middle
+of the gap) is at z = box.height / 2; the report plots heights relative to it,
+as the paper does (Fig. 11). Kanatani's density is
+f(n) = (1 / 4 pi) (1 + D2_ij n_i n_j + D4_ijkl n_i n_j n_k n_l), in 1/sr,
+integrating to one over the sphere; the report recomputes it from the normals
+and warns in the page when the D2/D4 given disagree.
+
+Figures of one run: stress ratio F/N (Fig. 10a), cap vertical displacement
+(Fig. 10b), horizontal displacement against height with the band (Fig. 11),
+mean rotation (Fig. 13), coordination number (Fig. 14), 3D rose diagrams of
+contact normals with Kanatani's density (Fig. 15), fabric factor Psi (Fig. 16),
+force chains (Fig. 17); tables of inputs and peak values. Comparison: overlays
+of F/N and cap displacement (Fig. 10a, b), peak friction and dilation angles
+against mean roundness (Fig. 10c, d) and a table of peaks.
+
+Output: index.html and the PNGs are (over)written in the output folder; PNGs
+of an earlier report that this one does not draw are removed. At the end the
+script prints the path of index.html, the figures written and the notes. Exit
+status 0, or 1 with one line "report.py: error: ..." on stderr when a run
+folder lacks series.csv or run.json (or they cannot be read).
+Only the Python standard library, numpy and matplotlib (Agg backend) are used.
+"""
+
+import argparse
+import csv
+import html
+import json
+import math
+import os
+import re
+import sys
+from pathlib import Path
+
+import numpy as np
+import matplotlib
+import matplotlib.ticker
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib import cm, colors  # noqa: E402
+from matplotlib.collections import LineCollection  # noqa: E402
+from mpl_toolkits.mplot3d.art3d import Line3DCollection  # noqa: E402
+
+DPI = 130
+ALL_COLOR, BAND_COLOR = "#1f4e9c", "#c0392b"
+RUN_COLORS = ["#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd", "#8c564b", "#e377c2", "#17becf",
+              "#7f7f7f", "#bcbd22"]
+REQUIRED_COLUMNS = ["time_s", "shear_strain", "horizontal_displacement_m", "vertical_displacement_m",
+                    "shear_force_N", "normal_force_N", "normal_stress_Pa", "stress_ratio",
+                    "friction_angle_deg", "void_ratio"]
+
+# Every PNG this script may write (so stale ones from an earlier report are removed).
+SINGLE_PNGS = ["stress_ratio.png", "vertical_displacement.png", "displacement_profile.png", "rotation.png",
+               "coordination_number.png", "rose_diagram.png", "fabric_psi.png", "force_chains.png"]
+COMPARISON_PNGS = ["stress_strain_overlay.png", "peaks_vs_roundness.png"]
+
+plt.rcParams.update({
+    "font.size": 10, "axes.titlesize": 11, "axes.labelsize": 10, "legend.fontsize": 9,
+    "axes.grid": True, "grid.alpha": 0.3, "savefig.bbox": "tight", "savefig.dpi": DPI,
+})
+
+
+class ReportError(Exception):
+    """A fatal problem with the inputs; its message is printed as one line."""
+
+
+# ---------------------------------------------------------------------------
+# Reading a run folder.
+
+def read_csv_columns(path):
+    """Named float columns of a CSV file (header row, then numbers); bad or empty cells are nan."""
+    with open(path, newline="") as fh:
+        rows = [r for r in csv.reader(fh) if r and any(c.strip() for c in r)]
+    if not rows:
+        raise ValueError("empty file")
+    header = [h.strip() for h in rows[0]]
+    values = np.full((len(rows) - 1, len(header)), np.nan)
+    for i, r in enumerate(rows[1:]):
+        for j in range(min(len(r), len(header))):
+            try:
+                values[i, j] = float(r[j])
+            except ValueError:
+                pass
+    return {name: values[:, j] for j, name in enumerate(header) if name}
+
+
+def get(d, *keys, default=None):
+    """d[k0][k1]... or default when any level is missing."""
+    for k in keys:
+        if not isinstance(d, dict) or k not in d or d[k] is None:
+            return default
+        d = d[k]
+    return d
+
+
+def num(x):
+    """x as a float, or None when it is not a finite number."""
+    try:
+        v = float(x)
+    except (TypeError, ValueError):
+        return None
+    return v if math.isfinite(v) else None
+
+
+class Run:
+    """One run folder: its series columns, run.json and the paths of its optional files."""
+
+    def __init__(self, folder):
+        self.dir = Path(folder)
+        if not self.dir.is_dir():
+            raise ReportError(f"'{folder}' is not a folder: give a grainlab run folder (with series.csv and run.json)")
+        for name in ("series.csv", "run.json"):
+            if not (self.dir / name).is_file():
+                raise ReportError(f"'{folder}' has no {name}: not a grainlab run folder "
+                                  "(a run writes series.csv and run.json; run it first or check the path)")
+        try:
+            self.series = read_csv_columns(self.dir / "series.csv")
+        except (OSError, ValueError, csv.Error) as e:
+            raise ReportError(f"cannot read '{self.dir / 'series.csv'}': {e}")
+        if "shear_strain" not in self.series:
+            raise ReportError(f"'{self.dir / 'series.csv'}' has no shear_strain column: not a grainlab series")
+        if len(self.series["shear_strain"]) == 0:
+            raise ReportError(f"'{self.dir / 'series.csv'}' has a header but no rows: the run has not sheared yet")
+        try:
+            self.info = json.loads((self.dir / "run.json").read_text())
+        except (OSError, ValueError) as e:
+            raise ReportError(f"cannot read '{self.dir / 'run.json'}': {e}")
+        if not isinstance(self.info, dict):
+            raise ReportError(f"'{self.dir / 'run.json'}' is not a JSON object")
+        self.name = self.dir.resolve().name
+        self.label = self.preset or self.name
+
+    @property
+    def preset(self):
+        return get(self.info, "config", "grains", "preset", default="")
+
+    @property
+    def sand(self):
+        return get(self.info, "config", "material", "preset", default="")
+
+    def col(self, name):
+        """The named series column, or None when it is missing or all nan."""
+        c = self.series.get(name)
+        return None if c is None or not np.any(np.isfinite(c)) else c
+
+    @property
+    def strain_pct(self):
+        return 100.0 * self.series["shear_strain"]
+
+    def path(self, rel):
+        return self.dir / rel
+
+    @property
+    def shear_plane_z(self):
+        """World z of the shear plane (middle of the gap) = box height / 2, or None if unknown."""
+        h = num(get(self.info, "config", "box", "height"))
+        return None if h is None else 0.5 * h
+
+    # Peak values: from run.json, else computed from the series.
+    def peak_friction(self):
+        v, e = num(get(self.info, "peaks", "friction_angle_deg")), num(get(self.info, "peaks", "strain_at_peak_friction"))
+        if v is None:
+            phi = self.col("friction_angle_deg")
+            if phi is None and self.col("stress_ratio") is not None:
+                phi = np.degrees(np.arctan(self.series["stress_ratio"]))
+            if phi is not None:
+                k = int(np.nanargmax(phi))
+                v, e = float(phi[k]), float(self.series["shear_strain"][k])
+        return v, e
+
+    def peak_dilation(self):
+        v, e = num(get(self.info, "peaks", "dilation_angle_deg")), num(get(self.info, "peaks", "strain_at_peak_dilation"))
+        if v is None:
+            psi = dilation_angle(self)
+            if psi is not None and np.any(np.isfinite(psi)):
+                k = int(np.nanargmax(psi))
+                v, e = float(psi[k]), float(self.series["shear_strain"][k])
+        return v, e
+
+    def peak_psi(self, band=False):
+        if not band:
+            v = num(get(self.info, "peaks", "fabric_psi"))
+            if v is not None:
+                return v
+        c = self.col("fabric_psi_band" if band else "fabric_psi")
+        return None if c is None else float(np.nanmax(c))
+
+    def band(self):
+        """(low_m, high_m, method, source) of the final shear band, or None."""
+        p = self.path("analysis/band.json")
+        if p.is_file():
+            try:
+                b = json.loads(p.read_text())
+                lo, hi = num(b.get("low_m")), num(b.get("high_m"))
+                if lo is not None and hi is not None:
+                    return lo, hi, str(b.get("method", "")), "analysis/band.json"
+            except (OSError, ValueError, AttributeError):
+                pass
+        lo, hi = self.col("band_low_m"), self.col("band_high_m")
+        if lo is not None and hi is not None:
+            ok = np.isfinite(lo) & np.isfinite(hi)
+            if np.any(ok):
+                k = np.nonzero(ok)[0][-1]
+                return float(lo[k]), float(hi[k]), "last sample of series.csv", "series.csv"
+        return None
+
+
+def dilation_angle(run):
+    """psi = atan(d d_v / d d_h) by central differences over +-2 samples (Eq. 19), deg."""
+    dh, dv = run.col("horizontal_displacement_m"), run.col("vertical_displacement_m")
+    if dh is None or dv is None:
+        return None
+    n = len(dh)
+    out = np.full(n, np.nan)
+    for k in range(n):
+        lo, hi = max(0, k - 2), min(n - 1, k + 2)
+        d = dh[hi] - dh[lo]
+        if d > 0:
+            out[k] = math.degrees(math.atan((dv[hi] - dv[lo]) / d))
+    return out
+
+
+# ---------------------------------------------------------------------------
+# Figure records.
+
+class Figure:
+    """One entry of the report: a PNG (or none) with its caption and notes."""
+
+    def __init__(self, title, paper, caption=""):
+        self.title, self.paper, self.caption = title, paper, caption
+        self.png = None
+        self.notes = []      # "not available: ..." and partial-data notes
+        self.warnings = []   # consistency problems found in the data
+
+    def missing(self, what, detail=""):
+        self.notes.append(f"not available: {what} missing" + (f" ({detail})" if detail else ""))
+        return self
+
+    def save(self, fig, out_dir, name):
+        fig.savefig(out_dir / name)
+        plt.close(fig)
+        self.png = name
+        return self
+
+
+def pct_axis(ax):
+    ax.set_xlabel("shear strain $\\varepsilon_s = d_h / L$ (%)")
+    ax.set_xlim(left=0)
+
+
+def all_band_figure(run, out_dir, name, cols, ylabel, title, paper, caption):
+    """Shared body of the 'all grains and shear band against strain' figures (13, 14, 16)."""
+    f = Figure(title, paper, caption)
+    c_all, c_band = run.col(cols[0]), run.col(cols[1])
+    if c_all is None and c_band is None:
+        return f.missing(f"series.csv columns {cols[0]} and {cols[1]}")
+    fig, ax = plt.subplots(figsize=(6.4, 4.0))
+    x = run.strain_pct
+    if c_all is not None:
+        ax.plot(x, c_all, color=ALL_COLOR, lw=1.6, label="all grains")
+    else:
+        f.missing(f"series.csv column {cols[0]} (all grains)")
+    if c_band is not None:
+        ax.plot(x, c_band, color=BAND_COLOR, lw=1.6, ls="--", label="grains in the shear band")
+    else:
+        f.missing(f"series.csv column {cols[1]} (shear band)")
+    pct_axis(ax)
+    ax.set_ylabel(ylabel)
+    ax.legend(loc="best")
+    ax.set_title(title)
+    return f.save(fig, out_dir, name)
+
+
+# ---------------------------------------------------------------------------
+# The figures of one run, one function each.
+
+def fig_stress_ratio(run, out_dir):
+    """Fig. 10a: F/N against shear strain, with the peak marked and phi = atan(F/N) on the right."""
+    f = Figure("Stress ratio against shear strain", "Fig. 10a",
+               "Shear force on the upper half over the normal force on the cap, F/N, against shear strain "
+               "d<sub>h</sub>/L. The right axis reads the mobilised friction angle &phi; = atan(F/N) (Eq. 18); "
+               "the dot marks the peak.")
+    r = run.col("stress_ratio")
+    if r is None:
+        return f.missing("series.csv column stress_ratio")
+    fig, ax = plt.subplots(figsize=(6.4, 4.0))
+    ax.plot(run.strain_pct, r, color=ALL_COLOR, lw=1.6, label="F/N")
+    phi_p, e_p = run.peak_friction()
+    if phi_p is not None and e_p is not None:
+        rp = math.tan(math.radians(phi_p))
+        ax.plot([100 * e_p], [rp], "o", color=BAND_COLOR, zorder=5,
+                label=f"peak: F/N = {rp:.3f}, $\\phi_p$ = {phi_p:.1f}° at $\\varepsilon_s$ = {100 * e_p:.1f} %")
+        ax.legend(loc="lower right")
+    pct_axis(ax)
+    ax.set_ylim(bottom=min(0.0, float(np.nanmin(r))))
+    ax.set_ylabel("stress ratio F/N (–)")
+    sec = ax.secondary_yaxis("right", functions=(lambda t: np.degrees(np.arctan(t)),
+                                                 lambda p: np.tan(np.radians(np.clip(p, -89.9, 89.9)))))
+    sec.set_ylabel("friction angle $\\phi$ = atan(F/N) (deg)")
+    ax.set_title("Stress ratio F/N")
+    return f.save(fig, out_dir, "stress_ratio.png")
+
+
+def fig_vertical_displacement(run, out_dir):
+    """Fig. 10b: cap vertical displacement (mm, up = dilation) against shear strain."""
+    f = Figure("Cap vertical displacement against shear strain", "Fig. 10b",
+               "Vertical displacement of the top cap since the start of shear, d<sub>v</sub>, in mm; up "
+               "(dilation) is positive, down (contraction) negative. The peak dilation angle "
+               "&psi;<sub>p</sub> = max atan(&Delta;d<sub>v</sub>/&Delta;d<sub>h</sub>) (Eq. 19) is given "
+               "in the legend.")
+    dv = run.col("vertical_displacement_m")
+    if dv is None:
+        return f.missing("series.csv column vertical_displacement_m")
+    fig, ax = plt.subplots(figsize=(6.4, 4.0))
+    psi_p, e_p = run.peak_dilation()
+    label = "cap displacement"
+    if psi_p is not None and e_p is not None:
+        label += f" ($\\psi_p$ = {psi_p:.1f}° at $\\varepsilon_s$ = {100 * e_p:.1f} %)"
+    ax.plot(run.strain_pct, 1e3 * dv, color=ALL_COLOR, lw=1.6, label=label)
+    if psi_p is not None and e_p is not None:
+        k = int(np.argmin(np.abs(run.series["shear_strain"] - e_p)))
+        ax.plot([run.strain_pct[k]], [1e3 * dv[k]], "o", color=BAND_COLOR, zorder=5,
+                label="steepest dilation")
+    ax.axhline(0, color="0.3", lw=0.8)
+    pct_axis(ax)
+    ax.set_ylabel("cap vertical displacement $d_v$ (mm), up = dilation")
+    ax.legend(loc="lower right")
+    ax.set_title("Cap vertical displacement")
+    return f.save(fig, out_dir, "vertical_displacement.png")
+
+
+def fig_displacement_profile(run, out_dir):
+    """Fig. 11: mean horizontal grain displacement against height, shear band shaded."""
+    f = Figure("Horizontal grain displacement against height", "Fig. 11",
+               "Mean horizontal displacement of the grains since the start of shear, per height layer, at the "
+               "end of the test, against height above the shear plane (the middle of the gap between the box "
+               "halves, z = H/2 in the engine's frame). The shaded layer is the shear band.")
+    p = run.path("analysis/profile.csv")
+    if not p.is_file():
+        return f.missing("analysis/profile.csv")
+    try:
+        prof = read_csv_columns(p)
+    except (OSError, ValueError, csv.Error) as e:
+        f.notes.append(f"not available: analysis/profile.csv unreadable ({e})")
+        return f
+    lacking = [c for c in ("z_m", "displacement_x_m") if c not in prof]
+    if lacking:
+        return f.missing("analysis/profile.csv column " + " and ".join(lacking))
+    z0 = run.shear_plane_z
+    ref = 0.0 if z0 is None else z0
+    ylabel = ("height above the shear plane, z − H/2 (mm)" if z0 is not None
+              else "height z (mm, engine frame)")
+    if z0 is None:
+        f.notes.append("config.box.height missing from run.json: heights shown in the engine's frame")
+    z = 1e3 * (prof["z_m"] - ref)
+    ux = 1e3 * prof["displacement_x_m"]
+    order = np.argsort(z)
+    fig, ax = plt.subplots(figsize=(5.2, 5.0))
+    band = run.band()
+    if band is not None:
+        lo, hi, method, source = band
+        ax.axhspan(1e3 * (lo - ref), 1e3 * (hi - ref), color=BAND_COLOR, alpha=0.15,
+                   label=f"shear band, {1e3 * (hi - lo):.2f} mm thick")
+        f.caption += f" Band from {html.escape(source)}" + (f" ({html.escape(method)})." if method else ".")
+    else:
+        f.missing("analysis/band.json and series.csv band_low_m/band_high_m (no band shaded)")
+    ax.plot(ux[order], z[order], "o-", color=ALL_COLOR, ms=3.5, lw=1.2, label="layer mean")
+    if z0 is not None:
+        ax.axhline(0, color="0.3", lw=0.8, ls=":", label="shear plane")
+    ax.set_xlabel("horizontal grain displacement $u_x$ (mm)")
+    ax.set_ylabel(ylabel)
+    ax.legend(loc="upper left")
+    ax.set_title("Horizontal displacement profile")
+    return f.save(fig, out_dir, "displacement_profile.png")
+
+
+def fig_rotation(run, out_dir):
+    """Fig. 13: mean grain rotation angle, all grains and band, against strain."""
+    return all_band_figure(
+        run, out_dir, "rotation.png", ("rotation_mean_deg", "rotation_band_deg"),
+        "mean rotation angle $\\theta_\\mathrm{mean}$ (deg)", "Mean grain rotation", "Fig. 13",
+        "Mean rotation angle &theta; = 2 acos(q<sub>0</sub>) (Eq. 21) of the grains since the start of shear, "
+        "over all grains and over the grains in the shear band, against shear strain.")
+
+
+def fig_coordination(run, out_dir):
+    """Fig. 14: coordination number, all grains and band, against strain."""
+    return all_band_figure(
+        run, out_dir, "coordination_number.png", ("coordination_number", "coordination_number_band"),
+        "coordination number CN = 2 $N_c$ / $N_p$ (–)", "Coordination number", "Fig. 14",
+        "Coordination number CN = 2 N<sub>c</sub>/N<sub>p</sub> (Eq. 22), grain-grain contacts per grain, "
+        "over all grains and over the grains in the shear band, against shear strain.")
+
+
+def fig_fabric_psi(run, out_dir):
+    """Fig. 16: octahedral fabric factor Psi, all grains and band, against strain."""
+    f = all_band_figure(
+        run, out_dir, "fabric_psi.png", ("fabric_psi", "fabric_psi_band"),
+        "octahedral fabric factor $\\Psi$ (–)", "Fabric anisotropy", "Fig. 16",
+        "Generalised octahedral fabric factor &Psi; = [(&phi;<sub>1</sub>&minus;&phi;<sub>2</sub>)<sup>2</sup> + "
+        "(&phi;<sub>1</sub>&minus;&phi;<sub>3</sub>)<sup>2</sup> + (&phi;<sub>2</sub>&minus;&phi;<sub>3</sub>)"
+        "<sup>2</sup>]<sup>1/2</sup>/&radic;2 of the principal values of the contact-normal fabric tensor "
+        "(Eq. 29), for all contacts and for contacts in the shear band, against shear strain "
+        "(0 = isotropic).")
+    return f
+
+
+# -- Fig. 15: rose diagrams -------------------------------------------------
+
+def kanatani_tensors(normals):
+    """D2, D4 from unit normals with Kanatani's coefficients (15/2 and 315/8; Eqs. 24-28)."""
+    n = normals
+    phi2 = n.T @ n / len(n)
+    phi4 = np.einsum("ai,aj,ak,al->ijkl", n, n, n, n, optimize=True) / len(n)
+    d = np.eye(3)
+    perms = ["ij,kl->ijkl", "ik,jl->ijkl", "il,jk->ijkl", "jk,il->ijkl", "jl,ik->ijkl", "kl,ij->ijkl"]
+    sym_dphi = sum(np.einsum(p, d, phi2) for p in perms) / 6
+    sym_dd = sum(np.einsum(p, d, d) for p in perms[:3]) / 3
+    return 7.5 * (phi2 - d / 3), 315 / 8 * (phi4 - 6 / 7 * sym_dphi + 3 / 35 * sym_dd)
+
+
+def kanatani_density(d2, d4, n):
+    """f(n) = (1 / 4 pi)(1 + D2_ij n_i n_j + D4_ijkl n_i n_j n_k n_l) for unit vectors n[..., 3]."""
+    q2 = np.einsum("ij,...i,...j->...", d2, n, n)
+    q4 = np.einsum("ijkl,...i,...j,...k,...l->...", d4, n, n, n, n, optimize=True)
+    return (1 + q2 + q4) / (4 * math.pi)
+
+
+def sphere_grid(n_theta=31, n_phi=61):
+    th = np.linspace(0, math.pi, n_theta)
+    ph = np.linspace(-math.pi, math.pi, n_phi)
+    T, P = np.meshgrid(th, ph, indexing="ij")
+    return T, P, np.stack([np.sin(T) * np.cos(P), np.sin(T) * np.sin(P), np.cos(T)], axis=-1)
+
+
+def rose_histogram(normals):
+    """Equal-solid-angle bins (uniform in n_z and azimuth) of n and -n; density in 1/sr.
+
+    About 25 normals per bin on average (at least 5 x 10 bins), so the bars are not noise."""
+    both = np.vstack([normals, -normals])
+    n_z = int(np.clip(round(math.sqrt(len(both) / 25 / 2)), 5, 18))
+    n_az = 2 * n_z
+    z_edges = np.linspace(-1, 1, n_z + 1)
+    az_edges = np.linspace(-math.pi, math.pi, n_az + 1)
+    counts, _, _ = np.histogram2d(np.clip(both[:, 2], -1, 1), np.arctan2(both[:, 1], both[:, 0]),
+                                  bins=[z_edges, az_edges])
+    omega = 4 * math.pi / (n_z * n_az)
+    return counts / len(both) / omega, z_edges, az_edges
+
+
+def rose_surface(density, z_edges, az_edges):
+    """The 3D rose as a closed surface r(theta, phi) = bin frequency: one vertex at the centre of
+    every bin at radius = its density (plus the two poles, at the mean of the polar bins), joined
+    into quads; the azimuth seam is closed. Returns X, Y, Z vertex grids and R per quad (mean of
+    its corners), for colouring."""
+    zc = 0.5 * (z_edges[:-1] + z_edges[1:])
+    ac = 0.5 * (az_edges[:-1] + az_edges[1:])
+    z = np.concatenate([[-1.0], zc, [1.0]])
+    a = np.concatenate([ac, [ac[0] + 2 * math.pi]])
+    r = np.vstack([np.full(len(ac), density[0].mean()), density, np.full(len(ac), density[-1].mean())])
+    r = np.hstack([r, r[:, :1]])
+    rho = np.sqrt(np.clip(1 - z ** 2, 0, None))[:, None]
+    X, Y, Z = r * rho * np.cos(a)[None, :], r * rho * np.sin(a)[None, :], r * z[:, None]
+    quad_r = 0.25 * (r[:-1, :-1] + r[1:, :-1] + r[:-1, 1:] + r[1:, 1:])
+    return X, Y, Z, quad_r
+
+
+def load_fabric(run, f):
+    """analysis/fabric.json as {'all': {...}, 'band': {...}}, or None with a note in f."""
+    p = run.path("analysis/fabric.json")
+    if not p.is_file():
+        f.missing("analysis/fabric.json")
+        return None
+    try:
+        fab = json.loads(p.read_text())
+    except (OSError, ValueError) as e:
+        f.notes.append(f"not available: analysis/fabric.json unreadable ({e})")
+        return None
+    if not isinstance(fab, dict):
+        f.notes.append("not available: analysis/fabric.json is not a JSON object")
+        return None
+    return fab
+
+
+def octahedral_psi(values):
+    """Psi of Eq. 29 from three principal values."""
+    a, b, c = values
+    return math.sqrt(((a - b) ** 2 + (a - c) ** 2 + (b - c) ** 2) / 2)
+
+
+def as_array(x, shape):
+    """x as a float array of the given shape, or None when it is missing or malformed."""
+    try:
+        a = np.asarray(x, float).reshape(shape)
+    except (TypeError, ValueError):
+        return None
+    return a if np.all(np.isfinite(a)) else None
+
+
+def fabric_set(entry, which, f):
+    """Normals, D2/D4, Psi and principal values of one set ('all' or 'band') of fabric.json,
+    checked against each other (warnings in f); None with a note when nothing can be drawn."""
+    normals = None
+    if entry.get("normals"):
+        normals = as_array(entry["normals"], (-1, 3))
+        if normals is None:
+            f.warnings.append(f"fabric.json '{which}': normals are not a list of finite 3-vectors; ignored")
+        else:
+            length = np.linalg.norm(normals, axis=1)
+            normals = normals[length > 0] / length[length > 0, None]
+            normals = normals if len(normals) else None
+    d2, d4 = as_array(entry.get("D2"), (3, 3)), as_array(entry.get("D4"), (3, 3, 3, 3))
+    phi = as_array(entry.get("phi"), (3, 3))
+    if normals is not None:
+        own2, own4 = kanatani_tensors(normals)
+        own_phi = normals.T @ normals / len(normals)
+        if d2 is None or d4 is None:
+            f.notes.append(f"fabric.json '{which}': D2/D4 missing or malformed; Kanatani's density computed "
+                           "here from the normals")
+            d2, d4 = own2, own4
+        else:
+            _, _, grid = sphere_grid(19, 37)
+            diff = 4 * math.pi * np.max(np.abs(kanatani_density(d2, d4, grid) - kanatani_density(own2, own4, grid)))
+            if diff > 0.05:
+                f.warnings.append(
+                    f"fabric.json '{which}': the D2/D4 given disagree with the normals (Kanatani densities "
+                    f"differ by up to {100 * diff:.0f} % of the isotropic 1/4&pi;). Kanatani's coefficients are "
+                    "D<sub>ij</sub> = 15/2 (&phi;<sub>ij</sub> &minus; &delta;<sub>ij</sub>/3) and "
+                    "D<sub>ijkl</sub> = 315/8 (...); the paper's Eqs. 24-25 print 2/15. The surface drawn is the "
+                    "one given.")
+        if phi is None:
+            phi = own_phi
+        elif np.max(np.abs(phi - own_phi)) > 0.01:
+            f.warnings.append(f"fabric.json '{which}': phi differs from the mean of n n over the normals by up to "
+                              f"{np.max(np.abs(phi - own_phi)):.3f}")
+    if d2 is None or d4 is None:
+        f.missing(f"analysis/fabric.json '{which}' normals and D2/D4")
+        return None
+    if normals is None:
+        f.notes.append(f"fabric.json '{which}': no normals, only Kanatani's density is drawn")
+    principal = None if phi is None else np.sort(np.linalg.eigvalsh(phi))[::-1]
+    psi = num(entry.get("psi"))
+    if principal is not None:
+        own = octahedral_psi(principal)
+        if psi is None:
+            psi = own
+        elif abs(psi - own) > 1e-3 + 1e-2 * own:
+            f.warnings.append(f"fabric.json '{which}': psi = {psi:.4f} but Eq. 29 on the principal values of "
+                              f"phi gives {own:.4f}")
+    elif as_array(entry.get("principal_values"), (3,)) is not None:
+        principal = as_array(entry["principal_values"], (3,))
+    return {"normals": normals, "D2": d2, "D4": d4, "psi": psi, "principal_values": principal}
+
+
+def fig_rose(run, out_dir):
+    """Fig. 15: 3D rose diagrams of contact normals (all and band) with Kanatani's surface."""
+    f = Figure("Contact normals: 3D rose diagrams and Kanatani's density", "Fig. 15",
+               "Spherical histograms of the contact normals at the end of the test (each normal counted as n and "
+               "&minus;n, bins of equal solid angle): every face sits at a distance from the centre equal to the "
+               "bin's frequency per steradian, coloured by it. The black wireframe is Kanatani's fourth-order "
+               "density f(n) = (1 + D<sub>ij</sub>n<sub>i</sub>n<sub>j</sub> + "
+               "D<sub>ijkl</sub>n<sub>i</sub>n<sub>j</sub>n<sub>k</sub>n<sub>l</sub>)/4&pi; (Eqs. 23-28) of the "
+               "same normals. An isotropic fabric is a sphere of radius 1/4&pi; = 0.080 sr<sup>&minus;1</sup>. "
+               "x is the shear direction, z is up.")
+    fab = load_fabric(run, f)
+    if fab is None:
+        return f
+    sets = []
+    for which, title in (("all", "all contacts"), ("band", "contacts in the shear band")):
+        if not isinstance(fab.get(which), dict):
+            f.missing(f"analysis/fabric.json '{which}' entry")
+            continue
+        s = fabric_set(fab[which], which, f)
+        if s is not None:
+            sets.append((which, title, s))
+    if not sets:
+        return f
+    _, _, grid = sphere_grid()
+    rmax, drawn = 0.0, []
+    for which, title, s in sets:
+        fk = kanatani_density(s["D2"], s["D4"], grid)
+        if np.any(fk < 0):
+            f.notes.append(f"'{which}': Kanatani's density is negative in places (drawn as 0)")
+            fk = np.clip(fk, 0, None)
+        hist = rose_histogram(s["normals"]) if s["normals"] is not None and len(s["normals"]) else None
+        rmax = max(rmax, float(fk.max()), 0.0 if hist is None else float(hist[0].max()))
+        drawn.append((which, title, s, fk, hist))
+    rmax *= 1.05
+    norm = colors.Normalize(0, rmax)
+    cmap = cm.viridis
+    fig = plt.figure(figsize=(5.6 * len(drawn) + 0.8, 5.8))
+    fig.subplots_adjust(left=0.0, right=0.9, bottom=0.1, top=0.92, wspace=0.05)
+    side = ["Left", "Right"] if len(drawn) == 2 else ["Shown"]
+    for k, (which, title, s, fk, hist) in enumerate(drawn):
+        ax = fig.add_subplot(1, len(drawn), k + 1, projection="3d", computed_zorder=False)
+        if hist is not None:
+            X, Y, Z, quad_r = rose_surface(*hist)
+            ax.plot_surface(X, Y, Z, facecolors=cmap(norm(quad_r)), rstride=1, cstride=1, linewidth=0.25,
+                            edgecolor=(1, 1, 1, 0.3), antialiased=True, shade=True, zorder=1)
+        ax.plot_wireframe(fk * grid[..., 0], fk * grid[..., 1], fk * grid[..., 2], rstride=2, cstride=3,
+                          color="black", linewidth=0.4, alpha=0.6, zorder=2)
+        ax.set_xlim(-rmax, rmax), ax.set_ylim(-rmax, rmax), ax.set_zlim(-rmax, rmax)
+        ax.set_box_aspect((1, 1, 1), zoom=0.95)  # a sphere must look round
+        for axis in (ax.xaxis, ax.yaxis, ax.zaxis):
+            axis.set_major_locator(matplotlib.ticker.MaxNLocator(4, symmetric=True))
+        ax.view_init(elev=18, azim=-72)
+        ax.set_xlabel("$f\\,n_x$ (sr$^{-1}$), x = shear", labelpad=2)
+        ax.set_ylabel("$f\\,n_y$ (sr$^{-1}$)", labelpad=2)
+        ax.set_zlabel("$f\\,n_z$ (sr$^{-1}$), z = up", labelpad=2)
+        ax.tick_params(labelsize=7, pad=0)
+        n_c = "no normals given" if s["normals"] is None else f"{len(s['normals'])} contacts"
+        psi = "not given" if s["psi"] is None else f"{s['psi']:.3f}"
+        ax.set_title(f"{title}\n$\\Psi$ = {psi}, {n_c}", fontsize=10)
+        pv = ("" if s["principal_values"] is None else
+              ", principal values of &phi;<sub>ij</sub> " + " / ".join(f"{v:.3f}" for v in s["principal_values"]))
+        f.caption += f" {side[k]}: {title} ({n_c}, &Psi; = {psi}{pv})."
+    if any(hist is not None for *_, hist in drawn):
+        cb = fig.colorbar(cm.ScalarMappable(norm=norm, cmap=cmap), ax=fig.axes, shrink=0.6, pad=0.04)
+        cb.set_label("frequency of contact normals per solid angle (sr$^{-1}$)")
+    return f.save(fig, out_dir, "rose_diagram.png")
+
+
+# -- Fig. 17: force chains ----------------------------------------------------
+
+def fig_force_chains(run, out_dir):
+    """Fig. 17: contact-force segments, side view (x-z) and 3D, strong chains emphasised."""
+    f = Figure("Force chains", "Fig. 17",
+               "Grain-grain contact forces at the end of the test, each drawn as a segment between the two "
+               "grain centres. Contacts carrying more than the mean force (strong chains) are coloured and "
+               "thickened by force; the weaker ones are thin and grey. Left: side view, projected on the x-z "
+               "plane (x = shear direction); right: 3D view.")
+    p = run.path("analysis/force_chains.csv")
+    if not p.is_file():
+        return f.missing("analysis/force_chains.csv")
+    try:
+        fc = read_csv_columns(p)
+    except (OSError, ValueError, csv.Error) as e:
+        f.notes.append(f"not available: analysis/force_chains.csv unreadable ({e})")
+        return f
+    need = ["x1_m", "y1_m", "z1_m", "x2_m", "y2_m", "z2_m", "force_N"]
+    lacking = [c for c in need if c not in fc]
+    if lacking:
+        return f.missing("analysis/force_chains.csv columns " + ", ".join(lacking))
+    a = np.column_stack([fc[c] for c in need])
+    a = a[np.all(np.isfinite(a), axis=1)]
+    if len(a) == 0:
+        f.notes.append("not available: analysis/force_chains.csv has no contacts")
+        return f
+    p1, p2, force = 1e3 * a[:, 0:3], 1e3 * a[:, 3:6], np.abs(a[:, 6])
+    order = np.argsort(force)
+    p1, p2, force = p1[order], p2[order], force[order]
+    mean, fmax = float(force.mean()), float(force.max())
+    strong = force > mean
+    norm = colors.Normalize(mean, fmax if fmax > mean else mean * 1.0001)
+    cmap = colors.LinearSegmentedColormap.from_list("chains", cm.inferno_r(np.linspace(0.2, 0.95, 256)))
+    t = np.clip((force - mean) / max(fmax - mean, 1e-300), 0, 1)  # 0 at the mean force, 1 at the largest
+    crowd = min(1.0, math.sqrt(2000.0 / max(1, int(strong.sum()))))  # thinner lines when there are many
+    width = crowd * (0.5 + 3.5 * np.sqrt(t))
+    rgba = cmap(norm(force))
+    rgba[:, 3] = 0.45 + 0.55 * np.sqrt(t)  # the weakest strong chains fade a little
+    weak_max = 30000
+    weak = np.nonzero(~strong)[0]
+    if len(weak) > weak_max:
+        weak = np.random.default_rng(0).choice(weak, weak_max, replace=False)
+        f.notes.append(f"{weak_max} of the {int(np.sum(~strong))} weak contacts drawn")
+
+    fig = plt.figure(figsize=(13.5, 5.4))
+    gs = fig.add_gridspec(1, 2, width_ratios=[1.0, 1.2], wspace=0.08)
+    ax = fig.add_subplot(gs[0, 0])
+    ref = run.shear_plane_z
+    zr = 0.0 if ref is None else 1e3 * ref
+    seg = lambda idx, i, j: np.stack([np.column_stack([p1[idx, i], p1[idx, j] - (zr if j == 2 else 0)]),
+                                      np.column_stack([p2[idx, i], p2[idx, j] - (zr if j == 2 else 0)])], axis=1)
+    ax.add_collection(LineCollection(seg(weak, 0, 2), colors="0.72", linewidths=0.4, alpha=0.6))
+    s_idx = np.nonzero(strong)[0]
+    ax.add_collection(LineCollection(seg(s_idx, 0, 2), colors=rgba[s_idx], linewidths=width[s_idx]))
+    band = run.band()
+    if band is not None:
+        for zb in band[:2]:
+            ax.axhline(1e3 * zb - zr, color=BAND_COLOR, lw=0.9, ls="--")
+        ax.plot([], [], color=BAND_COLOR, lw=0.9, ls="--", label="shear band limits")
+    if ref is not None:
+        ax.axhline(0, color="0.3", lw=0.8, ls=":", label="shear plane")
+    ax.plot([], [], color="0.72", lw=0.6, label=f"weak: force ≤ mean ({mean:.3g} N)")
+    ax.plot([], [], color=cmap(0.7), lw=2.5, label="strong: force > mean")
+    ax.autoscale_view()
+    ax.set_aspect("equal")
+    ax.set_xlabel("x, shear direction (mm)")
+    ax.set_ylabel("height above the shear plane, z − H/2 (mm)" if ref is not None else "z (mm)")
+    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.16), ncol=2, fontsize=8, frameon=False)
+    ax.set_title("side view (x-z projection)")
+    ax.grid(False)
+
+    ax3 = fig.add_subplot(gs[0, 1], projection="3d", computed_zorder=False)
+    shift = np.array([0.0, 0.0, zr])  # same heights as the side view
+    q1, q2 = p1 - shift, p2 - shift
+    seg3 = lambda idx: np.stack([q1[idx], q2[idx]], axis=1)
+    ax3.add_collection3d(Line3DCollection(seg3(weak), colors="0.65", linewidths=0.3, alpha=0.4))
+    ax3.add_collection3d(Line3DCollection(seg3(s_idx), colors=rgba[s_idx],
+                                          linewidths=0.7 * width[s_idx]))
+    lo, hi = np.minimum(q1.min(0), q2.min(0)), np.maximum(q1.max(0), q2.max(0))
+    ax3.set_xlim(lo[0], hi[0]), ax3.set_ylim(lo[1], hi[1]), ax3.set_zlim(lo[2], hi[2])
+    ax3.set_box_aspect(tuple(np.maximum(hi - lo, 1e-9)), zoom=1.1)
+    ax3.view_init(elev=16, azim=-62)
+    ax3.set_xlabel("x, shear (mm)"), ax3.set_ylabel("y (mm)"), ax3.set_zlabel("z − H/2 (mm)" if ref is not None else "z (mm)")
+    ax3.tick_params(labelsize=7, pad=0)
+    ax3.set_title("3D view")
+    cb = fig.colorbar(cm.ScalarMappable(norm=norm, cmap=cmap), ax=ax3, shrink=0.7, pad=0.16)
+    cb.set_label("contact force of strong chains (N)")
+    f.caption += (f" {len(force)} contacts; mean force {mean:.3g} N, maximum {fmax:.3g} N, "
+                  f"{int(strong.sum())} strong.")
+    return f.save(fig, out_dir, "force_chains.png")
+
+
+# ---------------------------------------------------------------------------
+# Tables.
+
+def fmt(v, spec=".3g", unit=""):
+    v = num(v)
+    if v is None:
+        return "&mdash;"
+    return f"{v:{spec}}" + (f" {unit}" if unit else "")
+
+
+def fmt_duration(s):
+    s = num(s)
+    if s is None:
+        return "&mdash;"
+    h, rem = divmod(int(round(s)), 3600)
+    m, sec = divmod(rem, 60)
+    return f"{s:.0f} s ({h}:{m:02d}:{sec:02d})"
+
+
+def esc(x):
+    return html.escape(str(x)) if x not in (None, "") else "&mdash;"
+
+
+def inputs_rows(run):
+    """(label, value HTML) rows of the run's inputs, from run.json."""
+    i, c = run.info, lambda *k: get(run.info, "config", *k)
+    box = [num(c("box", k)) for k in ("length", "width", "height")]
+    box_s = (" &times; ".join(f"{1e3 * b:.2f}" for b in box) + " mm") if all(b is not None for b in box) else "&mdash;"
+    folder = c("grains", "folder")
+    rows = [
+        ("grain class (config.grains.preset)", esc(run.preset) + (f" (meshes from {esc(folder)})" if folder else "")),
+        ("sand preset (config.material.preset)", esc(run.sand)),
+        ("grains", esc(get(i, "grains"))),
+        ("mean equivalent diameter", fmt(1e3 * (num(get(i, "mean_equivalent_diameter_m")) or float("nan")), ".3f", "mm")),
+        ("sieve range d<sub>min</sub>&ndash;d<sub>max</sub>",
+         f"{fmt(1e3 * (num(c('grains', 'd_min')) or float('nan')), '.3f')} &ndash; "
+         f"{fmt(1e3 * (num(c('grains', 'd_max')) or float('nan')), '.3f', 'mm')}"),
+        ("box L &times; W &times; H", box_s),
+        ("gap between the halves", fmt(1e3 * (num(c("box", "gap")) or float("nan")), ".2f", "mm")),
+        ("normal stress &sigma;<sub>n</sub>", fmt(1e-3 * (num(c("consolidation", "normal_stress")) or float("nan")), ".4g", "kPa")),
+        ("inter-grain friction &mu;", fmt(c("material", "friction"))),
+        ("wall friction", fmt(c("material", "wall_friction"))),
+        ("contact law", esc(c("material", "contact_law"))),
+        ("grain density", fmt(c("material", "density"), ".4g", "kg/m<sup>3</sup>")),
+        ("density scaling (used)", fmt(get(i, "density_scaling"))),
+        ("time step", fmt(get(i, "time_step_s"), ".3g", "s")),
+        ("shear speed", fmt(get(i, "shear_speed_m_per_s"), ".3g", "m/s")),
+        ("final strain (target)", fmt(100 * (num(c("shear", "final_strain")) or float("nan")), ".3g", "%")),
+        ("target Dr / target e", f"{fmt(100 * (num(c('specimen', 'relative_density')) or float('nan')), '.1f', '%')} / "
+                                 f"{fmt(get(i, 'preparation', 'target_void_ratio'), '.4f')}"),
+        ("seed", esc(get(i, "seed"))),
+        ("grainlab version", esc(get(i, "grainlab_version"))),
+    ]
+    return rows
+
+
+def results_rows(run):
+    """(label, value HTML) rows of the run's peak and final values."""
+    i = run.info
+    phi_p, e_phi = run.peak_friction()
+    psi_p, e_psi = run.peak_dilation()
+    at = lambda e: f" at &epsilon;<sub>s</sub> = {fmt(100 * e, '.2f', '%')}" if e is not None else ""
+    inertial = run.col("inertial_number")
+    unb = run.col("unbalanced_force_ratio")
+    dr = num(get(i, "preparation", "relative_density"))
+    rows = [
+        ("peak friction angle &phi;<sub>p</sub>", fmt(phi_p, ".2f", "deg") + at(e_phi)),
+        ("peak stress ratio F/N", fmt(get(i, "peaks", "stress_ratio"), ".4f")),
+        ("peak dilation angle &psi;<sub>p</sub>", fmt(psi_p, ".2f", "deg") + at(e_psi)),
+        ("peak fabric factor &Psi;<sub>p</sub>, all / band",
+         f"{fmt(run.peak_psi(), '.4f')} / {fmt(run.peak_psi(band=True), '.4f')}"),
+        ("final friction angle (last 10 % of the test)", fmt(get(i, "final", "friction_angle_deg"), ".2f", "deg")),
+        ("final dilation angle (last 10 % of the test)", fmt(get(i, "final", "dilation_angle_deg"), ".2f", "deg")),
+        ("achieved void ratio e after preparation", fmt(get(i, "preparation", "void_ratio"), ".4f")),
+        ("achieved relative density D<sub>r</sub>", fmt(None if dr is None else 100 * dr, ".1f", "%")),
+        ("final void ratio", fmt(get(i, "final", "void_ratio"), ".4f")),
+        ("mean grain roundness R", fmt(get(i, "mean_roundness"), ".3f")),
+        ("inertial number I, max during shear",
+         fmt(None if inertial is None else np.nanmax(inertial), ".2e") +
+         ("" if inertial is None else (" (quasi-static: I &lt; 10<sup>&minus;3</sup>)" if np.nanmax(inertial) < 1e-3
+                                       else " (<b>above 10<sup>&minus;3</sup>: not quasi-static</b>)"))),
+        ("unbalanced force ratio, median during shear", fmt(None if unb is None else np.nanmedian(unb), ".3g")),
+        ("wall time", fmt_duration(get(i, "timings", "wall_s"))),
+        ("steps / simulated time", f"{esc(get(i, 'timings', 'steps'))} / {fmt(get(i, 'timings', 'simulated_s'), '.4g', 's')}"),
+        ("samples in series.csv", str(len(run.series["shear_strain"]))),
+    ]
+    return rows
+
+
+def table_html(rows, caption):
+    body = "\n".join(f"<tr><th>{k}</th><td>{v}</td></tr>" for k, v in rows)
+    return f'<table class="kv"><caption>{caption}</caption>\n{body}\n</table>'
+
+
+# ---------------------------------------------------------------------------
+# Comparison figures.
+
+def run_colors(runs):
+    return {id(r): RUN_COLORS[k % len(RUN_COLORS)] for k, r in enumerate(runs)}
+
+
+def fig_overlay(runs, out_dir):
+    """Fig. 10a, b for several runs: F/N and cap displacement against strain, one curve per run."""
+    f = Figure("Stress ratio and cap displacement of all runs", "Fig. 10a, b",
+               "Top: stress ratio F/N against shear strain; bottom: vertical displacement of the top cap (up = "
+               "dilation) against shear strain; one curve per run, labelled by its grain class "
+               "(config.grains.preset).")
+    col = run_colors(runs)
+    fig, (a1, a2) = plt.subplots(2, 1, figsize=(7.0, 7.4), sharex=True)
+    for r in runs:
+        ratio, dv = r.col("stress_ratio"), r.col("vertical_displacement_m")
+        if ratio is not None:
+            a1.plot(r.strain_pct, ratio, color=col[id(r)], lw=1.5, label=r.label)
+        else:
+            f.missing(f"{r.name}/series.csv column stress_ratio")
+        if dv is not None:
+            a2.plot(r.strain_pct, 1e3 * dv, color=col[id(r)], lw=1.5, label=r.label)
+        else:
+            f.missing(f"{r.name}/series.csv column vertical_displacement_m")
+    a1.set_ylabel("stress ratio F/N (–)")
+    a1.set_ylim(bottom=0)
+    a1.set_title("(a) stress ratio")
+    a1.legend(title="grain class", loc="lower right")
+    a2.axhline(0, color="0.3", lw=0.8)
+    a2.set_ylabel("cap vertical displacement $d_v$ (mm), up = dilation")
+    a2.set_title("(b) cap vertical displacement")
+    pct_axis(a2)
+    fig.tight_layout()
+    return f.save(fig, out_dir, "stress_strain_overlay.png")
+
+
+def fig_peaks_vs_roundness(runs, out_dir):
+    """Fig. 10c, d: peak friction and dilation angles against mean grain roundness."""
+    f = Figure("Peak friction and dilation angles against mean roundness", "Fig. 10c, d",
+               "Peak friction angle &phi;<sub>p</sub> (left) and peak dilation angle &psi;<sub>p</sub> (right) of "
+               "each run against the mean Wadell roundness R of its grains (run.json mean_roundness).")
+    have = [r for r in runs if num(r.info.get("mean_roundness")) is not None]
+    lacking = [r.name for r in runs if r not in have]
+    if not have:
+        return f.missing("run.json mean_roundness", "in every run")
+    if lacking:
+        f.missing("run.json mean_roundness", "in " + ", ".join(lacking) + ", left out of the plot")
+    col = run_colors(runs)
+    fig, axes = plt.subplots(1, 2, figsize=(10.0, 4.2))
+    for ax, peak, ylabel, title in ((axes[0], Run.peak_friction, "peak friction angle $\\phi_p$ (deg)", "(c)"),
+                                    (axes[1], Run.peak_dilation, "peak dilation angle $\\psi_p$ (deg)", "(d)")):
+        xs, ys = [], []
+        for r in have:
+            v, _ = peak(r)
+            if v is None:
+                continue
+            R = float(r.info["mean_roundness"])
+            ax.plot([R], [v], "o", ms=8, color=col[id(r)])
+            ax.annotate(r.label, (R, v), xytext=(6, 5), textcoords="offset points", fontsize=8)
+            xs.append(R), ys.append(v)
+        if len(xs) >= 2 and np.ptp(xs) > 0:
+            k, b = np.polyfit(xs, ys, 1)
+            xx = np.array([min(xs), max(xs)])
+            ax.plot(xx, k * xx + b, color="0.5", lw=0.9, ls="--", label=f"least-squares line, slope {k:.1f}° per unit R")
+        ax.set_xlabel("mean grain roundness R (–)")
+        ax.set_ylabel(ylabel)
+        ax.set_title(f"{title} {ylabel.split(' $')[0]}")
+        ax.margins(x=0.15, y=0.2)
+        if len(xs) >= 2 and np.ptp(xs) > 0:
+            ax.legend(fontsize=8, loc="best")
+    fig.tight_layout()
+    return f.save(fig, out_dir, "peaks_vs_roundness.png")
+
+
+def comparison_table(runs, out_dir):
+    head = ["run", "grain class", "sand preset", "grains", "mean roundness R", "e after preparation", "D<sub>r</sub> (%)",
+            "&phi;<sub>p</sub> (deg)", "&epsilon;<sub>s</sub> at &phi;<sub>p</sub> (%)", "&psi;<sub>p</sub> (deg)",
+            "&Psi;<sub>p</sub> all / band", "final &phi; (deg)", "final e", "wall time (h)"]
+    rows = []
+    for r in runs:
+        phi_p, e_phi = r.peak_friction()
+        psi_p, _ = r.peak_dilation()
+        dr = num(get(r.info, "preparation", "relative_density"))
+        report = r.dir / "report" / "index.html"
+        name = esc(r.name)
+        if report.is_file():
+            name = f'<a href="{html.escape(Path(os.path.relpath(report, out_dir)).as_posix())}">{name}</a>'
+        wall = num(get(r.info, "timings", "wall_s"))
+        rows.append([name, esc(r.preset), esc(r.sand), esc(get(r.info, "grains")), fmt(get(r.info, "mean_roundness"), ".3f"),
+                     fmt(get(r.info, "preparation", "void_ratio"), ".4f"), fmt(None if dr is None else 100 * dr, ".1f"),
+                     fmt(phi_p, ".2f"), fmt(None if e_phi is None else 100 * e_phi, ".2f"), fmt(psi_p, ".2f"),
+                     f"{fmt(r.peak_psi(), '.3f')} / {fmt(r.peak_psi(band=True), '.3f')}",
+                     fmt(get(r.info, "final", "friction_angle_deg"), ".2f"), fmt(get(r.info, "final", "void_ratio"), ".4f"),
+                     fmt(None if wall is None else wall / 3600, ".2f")])
+    th = "".join(f"<th>{h}</th>" for h in head)
+    body = "\n".join("<tr>" + "".join(f"<td>{c}</td>" for c in row) + "</tr>" for row in rows)
+    return (f'<table class="grid"><caption>Peaks and preparation of each run (a run\'s name links to its own '
+            f'report when it has one)</caption>\n<tr>{th}</tr>\n{body}\n</table>')
+
+
+# ---------------------------------------------------------------------------
+# The page.
+
+CSS = """
+body { font-family: system-ui, -apple-system, "Segoe UI", Helvetica, Arial, sans-serif; margin: 2em auto;
+       max-width: 1100px; padding: 0 1em; color: #222; line-height: 1.45; }
+h1 { font-size: 1.6em; margin-bottom: 0.2em; } h2 { font-size: 1.25em; border-bottom: 1px solid #ccc; margin-top: 2em; }
+.sub { color: #555; margin-top: 0; }
+table { border-collapse: collapse; margin: 0.8em 0 1.2em; font-size: 0.92em; }
+caption { text-align: left; font-weight: 600; padding-bottom: 0.3em; }
+table.kv th { text-align: left; font-weight: normal; color: #444; padding: 0.2em 1.2em 0.2em 0; }
+table.kv td { padding: 0.2em 0; }
+table.grid th, table.grid td { border: 1px solid #ccc; padding: 0.25em 0.5em; text-align: right; }
+table.grid th { background: #f3f3f3; } table.grid td:first-child, table.grid td:nth-child(2),
+table.grid td:nth-child(3) { text-align: left; }
+.tables { display: flex; flex-wrap: wrap; gap: 3em; }
+figure { margin: 1.5em 0 2.2em; } figure img { max-width: 100%; border: 1px solid #eee; }
+figcaption { font-size: 0.92em; color: #333; max-width: 900px; }
+.note { background: #fff7e0; border-left: 4px solid #e0a800; padding: 0.4em 0.8em; margin: 0.4em 0; font-size: 0.92em; }
+.warn { background: #fdecea; border-left: 4px solid #c0392b; padding: 0.4em 0.8em; margin: 0.4em 0; font-size: 0.92em; }
+footer { color: #777; font-size: 0.85em; margin-top: 3em; }
+"""
+
+
+def figure_html(f):
+    parts = [f'<figure id="{html.escape(Path(f.png).stem) if f.png else ""}">' if f.png else "<figure>"]
+    parts.append(f"<h3>{html.escape(f.title)} <small>(cf. paper {f.paper})</small></h3>")
+    for w in f.warnings:
+        parts.append(f'<div class="warn">warning: {w}</div>')
+    for n in f.notes:
+        parts.append(f'<div class="note">{html.escape(n)}</div>')
+    if f.png:
+        parts.append(f'<a href="{html.escape(f.png)}"><img src="{html.escape(f.png)}" alt="{html.escape(f.title)}"></a>')
+        parts.append(f"<figcaption>Mirrors {f.paper} of He, Zheng &amp; Schaefer "
+                     f"(2021). {f.caption}</figcaption>")
+    parts.append("</figure>")
+    return "\n".join(parts)
+
+
+def write_page(out_dir, title, subtitle, blocks):
+    page = (f'<!DOCTYPE html>\n<html lang="en">\n<head>\n<meta charset="utf-8">\n<title>{html.escape(title)}</title>\n'
+            f"<style>{CSS}</style>\n</head>\n<body>\n<h1>{html.escape(title)}</h1>\n<p class=\"sub\">{subtitle}</p>\n"
+            + "\n".join(blocks) +
+            "\n<footer>Written by grainlab scripts/report.py. Figures follow He, Zheng &amp; Schaefer (2021), "
+            "<i>Simulating shearing behavior of realistic granular soils using physics engine</i>, Figs. 10-17. "
+            "SI units; strains in percent.</footer>\n</body>\n</html>\n")
+    path = out_dir / "index.html"
+    tmp = out_dir / ".index.html.tmp"
+    tmp.write_text(page, encoding="utf-8")
+    os.replace(tmp, path)
+    return path
+
+
+def prepare_out(out_dir, names):
+    out_dir.mkdir(parents=True, exist_ok=True)
+    for n in names:  # stale figures of an earlier report would otherwise linger unlinked
+        (out_dir / n).unlink(missing_ok=True)
+
+
+def single_report(run, out_dir):
+    prepare_out(out_dir, SINGLE_PNGS)
+    figs = [fn(run, out_dir) for fn in (fig_stress_ratio, fig_vertical_displacement, fig_displacement_profile,
+                                        fig_rotation, fig_coordination, fig_rose, fig_fabric_psi, fig_force_chains)]
+    subtitle = (f"Direct shear run <code>{html.escape(run.name)}</code> (folder <code>{html.escape(str(run.dir.resolve()))}"
+                f"</code>): grain class "
+                f"{esc(run.preset)}, sand preset {esc(run.sand)}, {esc(get(run.info, 'grains'))} grains.")
+    toc = "<ul>" + "".join(f'<li><a href="#{html.escape(Path(f.png).stem)}">{html.escape(f.title)}</a> ({f.paper})</li>'
+                           if f.png else f"<li>{html.escape(f.title)} ({f.paper}): not available</li>" for f in figs) + "</ul>"
+    blocks = ['<h2>Inputs and results</h2>\n<div class="tables">',
+              table_html(inputs_rows(run), "Inputs (run.json)"),
+              table_html(results_rows(run), "Peaks and results"), "</div>",
+              "<h2>Figures</h2>", toc]
+    blocks += [figure_html(f) for f in figs]
+    return write_page(out_dir, f"grainlab run report: {run.name}", subtitle, blocks), figs
+
+
+def comparison_report(runs, out_dir):
+    prepare_out(out_dir, COMPARISON_PNGS)
+    figs = [fig_overlay(runs, out_dir), fig_peaks_vs_roundness(runs, out_dir)]
+    subtitle = f"{len(runs)} direct shear runs: " + ", ".join(
+        f"<code>{html.escape(r.name)}</code> ({esc(r.preset)})" for r in runs) + "."
+    blocks = ["<h2>Peaks</h2>", comparison_table(runs, out_dir), "<h2>Figures</h2>"]
+    blocks += [figure_html(f) for f in figs]
+    return write_page(out_dir, "grainlab comparison report", subtitle, blocks), figs
+
+
+def disambiguate_labels(runs):
+    seen = {}
+    for r in runs:
+        seen.setdefault(r.label, []).append(r)
+    for label, group in seen.items():
+        if len(group) > 1:
+            for r in group:
+                r.label = f"{label} ({r.name})"
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(
+        description="Write an HTML report with PNG figures (paper Figs. 10-17) for one grainlab direct shear run, "
+                    "or a comparison report for several.")
+    ap.add_argument("runs", nargs="+", metavar="RUN_DIR", help="run folder(s) holding series.csv and run.json")
+    ap.add_argument("--out", metavar="DIR", help="where to write index.html and the PNGs (default: RUN_DIR/report "
+                    "for one run, RUN_DIR/../comparison/report for several, after the first run)")
+    a = ap.parse_args(argv)
+    try:
+        runs = [Run(d) for d in a.runs]
+        disambiguate_labels(runs)
+        if a.out:
+            out_dir = Path(a.out)
+        elif len(runs) == 1:
+            out_dir = runs[0].dir / "report"
+        else:
+            out_dir = runs[0].dir.resolve().parent / "comparison" / "report"
+        with np.errstate(invalid="ignore", divide="ignore"):
+            if len(runs) == 1:
+                page, figs = single_report(runs[0], out_dir)
+            else:
+                page, figs = comparison_report(runs, out_dir)
+    except ReportError as e:
+        print(f"report.py: error: {e}", file=sys.stderr)
+        return 1
+    written = [f.png for f in figs if f.png]
+    print(f"report: {page.resolve()}")
+    print(f"figures written ({len(written)}): " + (", ".join(written) if written else "none"))
+    for f in figs:
+        for n in f.notes:
+            print(f"  {f.paper}: {n}")
+        for w in f.warnings:
+            print(f"  {f.paper}: warning: {html.unescape(re.sub('<[^>]+>', '', w))}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,131 @@
+#!/usr/bin/env bash
+# Tests scripts/report.py on fabricated run folders (scripts/make_fake_run.py).
+# Exits non-zero on the first failure. Needs Debian's python3 with matplotlib
+# and numpy (override with PY=/path/to/python3).
+#
+#   bash scripts/test_report.sh
+set -euo pipefail
+
+here="$(cd "$(dirname "$0")" && pwd)"
+PY="${PY:-/usr/bin/python3}"
+tmp="$(mktemp -d "${TMPDIR:-/tmp}/test_report.XXXXXX")"
+trap 'rm -rf "$tmp"' EXIT
+
+fail() { echo "FAIL: $*" >&2; exit 1; }
+pass() { echo "ok: $*"; }
+
+# A valid PNG starts with the 8 bytes 89 50 4E 47 0D 0A 1A 0A.
+is_png() { [ "$(head -c 8 "$1" | od -An -tx1 | tr -d ' \n')" = "89504e470d0a1a0a" ]; }
+
+# check_report DIR PNG...: DIR/index.html exists, links every PNG named, each
+# of which exists and is a PNG; and every PNG the page links exists too.
+check_report() {
+  local dir="$1"; shift
+  [ -s "$dir/index.html" ] || fail "$dir/index.html missing or empty"
+  for png in "$@"; do
+    grep -q "src=\"$png\"" "$dir/index.html" || fail "$dir/index.html does not show $png"
+    grep -q "href=\"$png\"" "$dir/index.html" || fail "$dir/index.html does not link $png"
+    [ -f "$dir/$png" ] || fail "$dir/$png missing"
+    is_png "$dir/$png" || fail "$dir/$png is not a PNG"
+  done
+  local linked
+  linked="$(grep -o 'src="[^"]*"' "$dir/index.html" | sed 's/^src="//; s/"$//')"
+  for png in $linked; do
+    case "$png" in http*|/*) fail "$dir/index.html links $png: links must be relative" ;; esac
+    [ -f "$dir/$png" ] || fail "$dir/index.html links $png, which does not exist"
+    is_png "$dir/$png" || fail "$dir/$png (linked) is not a PNG"
+  done
+  if grep -qiE '<(script|link)[ >]' "$dir/index.html"; then fail "$dir/index.html loads external CSS or JS"; fi
+}
+
+single_pngs=(stress_ratio.png vertical_displacement.png displacement_profile.png rotation.png
+             coordination_number.png rose_diagram.png fabric_psi.png force_chains.png)
+comparison_pngs=(stress_strain_overlay.png peaks_vs_roundness.png)
+
+# --- two fake runs ---------------------------------------------------------------
+"$PY" "$here/make_fake_run.py" "$tmp/runs/angular" --preset angular --seed 1 >/dev/null
+"$PY" "$here/make_fake_run.py" "$tmp/runs/beads" --preset glass-beads --seed 2 >/dev/null
+for f in series.csv run.json analysis/profile.csv analysis/band.json analysis/fabric.json analysis/force_chains.csv; do
+  [ -f "$tmp/runs/angular/$f" ] || fail "make_fake_run.py did not write $f"
+done
+pass "make_fake_run.py writes every file of the contract"
+
+# --- one run -----------------------------------------------------------------------
+out="$("$PY" "$here/report.py" "$tmp/runs/angular")" || fail "report.py failed on a complete run"
+check_report "$tmp/runs/angular/report" "${single_pngs[@]}"
+grep -q "index.html" <<<"$out" || fail "report.py did not print the path of index.html"
+for png in "${single_pngs[@]}"; do grep -q "$png" <<<"$out" || fail "report.py did not list $png"; done
+if grep -q "not available" "$tmp/runs/angular/report/index.html"; then
+  fail "a complete run's report says something is not available"
+fi
+if grep -q 'class="warn"' "$tmp/runs/angular/report/index.html"; then
+  fail "a consistent fake run's report has a warning"
+fi
+for fig in "Fig. 10a" "Fig. 10b" "Fig. 11" "Fig. 13" "Fig. 14" "Fig. 15" "Fig. 16" "Fig. 17"; do
+  grep -q "$fig" "$tmp/runs/angular/report/index.html" || fail "no caption names $fig"
+done
+grep -q "peak friction angle" "$tmp/runs/angular/report/index.html" || fail "no table of peaks"
+pass "single-run report: index.html and its 8 PNGs"
+
+# --- both runs: comparison in the first run's sibling folder -----------------------
+"$PY" "$here/report.py" "$tmp/runs/angular" "$tmp/runs/beads" >/dev/null || fail "comparison report failed"
+check_report "$tmp/runs/comparison/report" "${comparison_pngs[@]}"
+grep -q "angular" "$tmp/runs/comparison/report/index.html" || fail "comparison table lacks the angular run"
+grep -q "glass-beads" "$tmp/runs/comparison/report/index.html" || fail "comparison table lacks the glass-beads run"
+pass "comparison report: index.html and its 2 PNGs in runs/comparison/report"
+
+# --- --out, and a comparison without roundness --------------------------------------
+"$PY" "$here/make_fake_run.py" "$tmp/runs/noround" --no-roundness >/dev/null
+"$PY" "$here/report.py" "$tmp/runs/noround" "$tmp/runs/beads" --out "$tmp/cmp" >/dev/null || fail "--out failed"
+check_report "$tmp/cmp" stress_strain_overlay.png peaks_vs_roundness.png
+grep -q "not available: run.json mean_roundness missing" "$tmp/cmp/index.html" \
+  || fail "a run without mean_roundness is not noted"
+"$PY" "$here/report.py" "$tmp/runs/noround" "$tmp/runs/noround" --out "$tmp/cmp0" >/dev/null || fail "comparison without roundness failed"
+check_report "$tmp/cmp0" stress_strain_overlay.png
+[ ! -e "$tmp/cmp0/peaks_vs_roundness.png" ] || fail "scatter drawn although no run has a mean roundness"
+grep -q "not available: run.json mean_roundness missing" "$tmp/cmp0/index.html" || fail "missing scatter not noted"
+pass "--out, and the roundness scatter skipped with a note"
+
+# --- a run without analysis/ --------------------------------------------------------
+cp -r "$tmp/runs/angular" "$tmp/runs/bare"
+rm -rf "$tmp/runs/bare/analysis" "$tmp/runs/bare/report"
+"$PY" "$here/report.py" "$tmp/runs/bare" >/dev/null || fail "report.py failed on a run without analysis/"
+page="$tmp/runs/bare/report/index.html"
+check_report "$tmp/runs/bare/report" stress_ratio.png vertical_displacement.png rotation.png \
+  coordination_number.png fabric_psi.png
+for f in analysis/profile.csv analysis/fabric.json analysis/force_chains.csv; do
+  grep -q "not available: $f missing" "$page" || fail "no 'not available: $f missing' note"
+done
+for png in displacement_profile.png rose_diagram.png force_chains.png; do
+  [ ! -e "$tmp/runs/bare/report/$png" ] || fail "$png written without its input"
+done
+pass "run without analysis/: report with 'not available' notes"
+
+# --- the minimal run: no analysis files nor analysis columns ------------------------
+"$PY" "$here/make_fake_run.py" "$tmp/runs/minimal" --no-analysis >/dev/null
+"$PY" "$here/report.py" "$tmp/runs/minimal" >/dev/null || fail "report.py failed on a minimal run"
+check_report "$tmp/runs/minimal/report" stress_ratio.png vertical_displacement.png
+grep -q "not available: series.csv columns rotation_mean_deg and rotation_band_deg missing" \
+  "$tmp/runs/minimal/report/index.html" || fail "missing rotation columns not noted"
+pass "minimal run (series.csv with the engine's columns only)"
+
+# --- refusals ---------------------------------------------------------------------
+mkdir -p "$tmp/runs/empty"
+cp "$tmp/runs/angular/run.json" "$tmp/runs/empty/"
+set +e
+msg="$("$PY" "$here/report.py" "$tmp/runs/empty" 2>&1 >/dev/null)"; rc=$?
+set -e
+[ "$rc" -ne 0 ] || fail "report.py accepted a folder without series.csv"
+[ "$(printf '%s\n' "$msg" | wc -l)" -eq 1 ] || fail "the refusal is not one line: $msg"
+grep -q "series.csv" <<<"$msg" || fail "the refusal does not name series.csv: $msg"
+[ ! -e "$tmp/runs/empty/report" ] || fail "a refused folder got a report folder"
+pass "refuses a folder without series.csv: $msg"
+
+cp "$tmp/runs/angular/series.csv" "$tmp/runs/empty/"; rm "$tmp/runs/empty/run.json"
+set +e
+msg="$("$PY" "$here/report.py" "$tmp/runs/empty" 2>&1 >/dev/null)"; rc=$?
+set -e
+[ "$rc" -ne 0 ] && grep -q "run.json" <<<"$msg" || fail "a folder without run.json was not refused clearly: $msg"
+pass "refuses a folder without run.json: $msg"
+
+echo "all report tests passed"
