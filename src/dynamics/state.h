@@ -46,6 +46,11 @@ struct PairContact {
   }
 };
 
+// True if the pair touches in the current step and so carries a force: the
+// one criterion for "in contact" (World::contact_count, coordination numbers,
+// contact output).
+inline bool in_contact(const PairContact& pc) { return pc.geo.touching; }
+
 struct State {
   double time = 0;        // s
   std::int64_t step = 0;

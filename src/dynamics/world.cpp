@@ -412,8 +412,8 @@ double World::kinetic_energy() const {
 
 std::size_t World::contact_count() const {
   std::size_t n = 0;
-  for (const PairContact& pc : state.pairs) n += pc.geo.touching;
-  for (const PairContact& pc : state.wall_pairs) n += pc.geo.touching;
+  for (const PairContact& pc : state.pairs) n += in_contact(pc);
+  for (const PairContact& pc : state.wall_pairs) n += in_contact(pc);
   return n;
 }
 
