@@ -86,7 +86,8 @@ TEST(VtkWriter, BinaryLayoutIsVtksInlineBase64WithUInt64Header) {
   EXPECT_NE(text.find("header_type=\"UInt64\""), std::string::npos);
   EXPECT_NE(text.find("byte_order=\"LittleEndian\""), std::string::npos);
   EXPECT_NE(text.find("NumberOfPoints=\"1\" NumberOfVerts=\"1\" NumberOfLines=\"0\""), std::string::npos);
-  // 24 bytes of points: the count (24 as a little-endian u64) and the values in one base64 stream.
+  // 24 bytes of points: the count (24 as a little-endian u64) and the values in
+  // one base64 stream, not two padded blocks (VTK's reader seeks into one stream).
   std::vector<std::uint8_t> payload(8 + 24, 0);
   payload[0] = 24;
   std::memcpy(payload.data() + 8, std::get<std::vector<double>>(pd.points.values).data(), 24);
