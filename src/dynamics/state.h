@@ -46,8 +46,9 @@ struct PairContact {
   }
 };
 
-// A pair is a contact when its shapes overlap this step. The one criterion for
-// "in contact": World's contact counters and the analysis layer use it.
+// True if the pair touches in the current step and so carries a force: the
+// one criterion for "in contact" (World::contact_count, coordination numbers,
+// contact output).
 inline bool in_contact(const PairContact& pc) { return pc.geo.touching; }
 
 struct State {
