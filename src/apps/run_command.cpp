@@ -37,7 +37,7 @@ struct RunOptions {
 
 void write_series(const DirectShearTest& test, const std::filesystem::path& out) {
   Table t;
-  t.columns = shear_series_columns();
+  t.columns = test.series_columns();
   t.rows = test.series();
   write_file_atomically(out / "series.csv", t.to_csv());
 }

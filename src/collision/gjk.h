@@ -47,6 +47,10 @@ struct GjkEpaInfo {
   int epa_iterations = 0;
   bool used_epa = false;
   bool epa_converged = false;  // false: stopped on capacity or degeneracy, best bound returned
+  // Separated shapes: the final GJK simplex, points of C = A - B whose convex
+  // hull holds the closest point to the origin.
+  int simplex_size = 0;
+  Vec3 simplex[4];
 };
 
 namespace gjk_detail {
@@ -270,6 +274,8 @@ ContactResult gjk_epa(const ShapeA& a, const ShapeB& b, Vec3& dir, GjkEpaInfo* i
     r.normal = -v / dist;
     r.point = 0.5 * (pa + pb);
     dir = r.normal;
+    inf.simplex_size = s.n;
+    for (int i = 0; i < s.n; ++i) inf.simplex[i] = s.p[i].w;
     return r;
   }
 

@@ -21,11 +21,17 @@
 //                cap holding the normal stress. A sample is recorded every
 //                output.strain_interval of shear strain.
 //
-// Servo: v_z = G (sigma - sigma_target) with G = alpha A / (k_cap dt), where
-// k_cap is the summed tangent stiffness of the cap's contacts (1.5 f/delta for
-// Hertz, f/delta for Hooke) and alpha = 0.05: the stress error would be removed in
-// about 1/alpha steps if the specimen were a spring k_cap, and the cap never
-// moves more than 2e-4 grain diameters per step (the speed is clamped).
+// Servo (proportional-integral): v_z = G (e + I), e = sigma - sigma_target,
+// I <- I + beta e each step, with G = alpha A / (k_cap dt), where k_cap is the
+// summed tangent stiffness of the cap's contacts (1.5 f/delta for Hertz,
+// f/delta for Hooke). If the specimen were a spring k_cap, the stress would
+// change by -alpha (e + I) per step: alpha = 0.05 removes an error in about
+// 1/alpha steps, slowly enough for the stress to cross the specimen. A purely
+// proportional servo following a dilating specimen at speed u lags by
+// e = u k_cap dt / (alpha A), a few per cent in shear; the integral term
+// (beta = alpha / 10, overdamped: beta < alpha / 4) removes that lag. The cap
+// never moves more than 2e-4 grain diameters per step (the speed is clamped,
+// and the integral does not wind up while it is).
 //
 // Measured (DESIGN.md "Walls and the direct shear box"): shear force F on the
 // upper half (minus the x force the grains put on its slabs and the cap),
@@ -40,6 +46,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <string>
 #include <vector>
@@ -75,7 +82,8 @@ class DirectShearTest {
   double solid_volume() const { return solid_volume_; }   // m^3
   double mean_diameter() const { return mean_diameter_; } // m, volume-equivalent
 
-  // Advances by up to max_steps steps; stops early at a phase change. Returns
+  // Advances by up to max_steps steps; stops early at a phase change and after
+  // recording a sample (so callers see the sampled state). Returns
   // false once the test is done. Throws RunError if preparation misses its
   // target or a phase does not converge.
   bool advance(int max_steps);
@@ -91,8 +99,20 @@ class DirectShearTest {
   double inertial_number() const;
   double cap_displacement() const;  // m, since the start of shear (up is positive)
 
-  // The series recorded so far (one row per sample, columns as shear_series_columns()).
+  // The series recorded so far (one row per sample, columns as
+  // shear_series_columns(), then those of the sample observer if one is set).
   const std::vector<std::vector<double>>& series() const { return progress_.rows; }
+  std::vector<std::string> series_columns() const;
+
+  // An observer that appends its own values to every sample row (analysis of
+  // the grains, computed by a higher layer): called with the test at the
+  // sampled step. Set it before the first sample, the same on a resumed run.
+  using SampleObserver = std::function<std::vector<double>(const DirectShearTest&)>;
+  void set_sample_observer(std::vector<std::string> columns, SampleObserver observer);
+
+  // The grains at the start of shear (displacements and rotations are measured
+  // from it); empty before shear.
+  const std::vector<BodyState>& shear_reference() const { return progress_.reference; }
   ShearSummary summary() const;
   // Preparation results.
   double achieved_void_ratio() const { return progress_.compacted_void_ratio; }
@@ -115,14 +135,20 @@ class DirectShearTest {
     double cap_z_at_shear = 0;
     double upper_x_at_shear = 0;
     double next_sample_strain = 0;
+    double servo_integral = 0;          // Pa, the servo's integral term
     std::array<std::int64_t, 5> phase_start_step{};
     std::vector<std::vector<double>> rows;
+    std::vector<BodyState> reference;  // grains at the start of shear
   };
 
   void build_walls();
   void enter(ShearPhase p);
   void servo(World& w, double dt);
-  bool at_rest(bool check_stress) const;
+  // Stress within tolerance and kinetic energy small against the elastic
+  // energy; with check_unbalanced, also the unbalanced-force ratio (the
+  // compaction skips it: grains with the low deposition friction keep a
+  // jitter of about 0.2 that does not change the density).
+  bool at_rest(bool check_unbalanced) const;
   void record_sample();
   double box_area() const { return spec_.box.length * spec_.box.width; }
   Index wall(WallRole r) const { return static_cast<Index>(r); }
@@ -139,6 +165,8 @@ class DirectShearTest {
   Index grain_material_ = 0;
   Index wall_material_ = 1;
   double cap_speed_limit_ = 0;
+  std::vector<std::string> observer_columns_;
+  SampleObserver observer_;
 };
 
 }  // namespace grainlab

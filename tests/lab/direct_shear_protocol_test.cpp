@@ -1,0 +1,137 @@
+// The whole direct shear protocol on a tiny box (about 90 grains): preparation
+// reaches its target density, consolidation holds the normal stress within
+// 1 %, the cap holds it within 2 % during shear, and the measured F, N and
+// displacements agree with the forces and motions of the walls.
+#include "core/error.h"
+#include "lab/direct_shear.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace grainlab;
+
+namespace {
+
+DirectShearSpec tiny_protocol_spec() {
+  DirectShearSpec spec;
+  spec.box.length = 3.5e-3;
+  spec.box.width = 3.5e-3;
+  spec.box.height = 2.5e-3;
+  spec.grains.shapes = 4;
+  spec.grains.faces = 120;
+  spec.seed = 5;
+  // The densest this preparation makes in a box under five grains wide,
+  // where the walls loosen the packing (measured: e = 0.63 to 0.65).
+  spec.specimen.void_ratio = 0.64;
+  spec.specimen.tolerance = 0.02;
+  spec.shear.final_strain = 0.02;
+  spec.numerics.time_step_fraction = 0.4;
+  return spec;
+}
+
+// One run shared by the tests below (it takes most of their time).
+struct TinyRun {
+  DirectShearSpec spec = tiny_protocol_spec();
+  DirectShearTest test{spec};
+  double consolidated_stress = 0;  // Pa, when consolidation ended
+  double max_shear_stress_error = 0;  // relative, over every step of shear
+  double worst_force_balance = 0;  // |F_upper + F_lower| / F at the samples
+  double worst_normal_balance = 0; // |N_cap - (N_floor - W)| / N at the samples
+
+  TinyRun() {
+    const Model& m = test.world().model;
+    double weight = 0;
+    for (const BodyModel& b : m.bodies) weight += b.gravity_mass * 9.81;
+    std::size_t rows = 0;
+    while (test.phase() != ShearPhase::Done) {
+      const ShearPhase before = test.phase();
+      test.advance(before == ShearPhase::Shear ? 1 : 500);
+      if (before == ShearPhase::Consolidate && test.phase() == ShearPhase::Shear)
+        consolidated_stress = test.normal_stress();
+      if (test.phase() == ShearPhase::Shear) {
+        const double sigma = spec.consolidation.normal_stress;
+        max_shear_stress_error = std::max(max_shear_stress_error, std::abs(test.normal_stress() / sigma - 1));
+      }
+      if (test.series().size() != rows && test.phase() == ShearPhase::Shear) {
+        rows = test.series().size();
+        const auto& walls = test.world().state.walls;
+        double lower = 0;
+        for (int r = DirectShearTest::Floor; r <= DirectShearTest::LowerYp; ++r) lower += walls[r].force.x();
+        const double F = test.shear_force();
+        worst_force_balance = std::max(worst_force_balance, std::abs(lower - F) / F);
+        const double N = test.normal_force(), floor = -walls[DirectShearTest::Floor].force.z();
+        worst_normal_balance = std::max(worst_normal_balance, std::abs(N - (floor - weight)) / N);
+      }
+    }
+  }
+};
+
+const TinyRun& tiny_run() {
+  static const TinyRun run;
+  return run;
+}
+
+constexpr int kStrain = 1, kDh = 2, kDv = 3, kF = 4, kN = 5, kSigma = 6, kRatio = 7, kPhi = 8;
+
+}  // namespace
+
+TEST(DirectShearProtocol, PreparationReachesTheTargetDensity) {
+  const TinyRun& r = tiny_run();
+  EXPECT_NEAR(r.test.achieved_void_ratio(), r.spec.target_void_ratio(), r.spec.specimen.tolerance);
+  const auto& s = r.spec.specimen;
+  EXPECT_NEAR(r.test.achieved_relative_density(), (s.e_max - r.test.achieved_void_ratio()) / (s.e_max - s.e_min),
+              1e-12);
+}
+
+TEST(DirectShearProtocol, ConsolidationHoldsTheNormalStressWithinOnePercent) {
+  const TinyRun& r = tiny_run();
+  EXPECT_NEAR(r.consolidated_stress / r.spec.consolidation.normal_stress, 1.0, 0.01);
+}
+
+TEST(DirectShearProtocol, CapHoldsTheNormalStressWithinTwoPercentDuringShear) {
+  const TinyRun& r = tiny_run();
+  std::printf("largest stress error during shear: %.2f %%\n", 100 * r.max_shear_stress_error);
+  EXPECT_LT(r.max_shear_stress_error, 0.02);
+  for (const auto& row : r.test.series())
+    EXPECT_NEAR(row[kSigma] / r.spec.consolidation.normal_stress, 1.0, 0.02) << "at strain " << row[kStrain];
+}
+
+TEST(DirectShearProtocol, SeriesIsConsistentWithTheWalls) {
+  const TinyRun& r = tiny_run();
+  const auto& rows = r.test.series();
+  ASSERT_GE(rows.size(), 15u);  // 2 % strain sampled every 0.1 %
+  const double L = r.spec.box.length, A = L * r.spec.box.width;
+  for (const auto& row : rows) {
+    EXPECT_DOUBLE_EQ(row[kDh], row[kStrain] * L);
+    EXPECT_DOUBLE_EQ(row[kSigma], row[kN] / A);
+    EXPECT_DOUBLE_EQ(row[kRatio], row[kF] / row[kN]);
+    EXPECT_NEAR(row[kPhi], std::atan(row[kRatio]) * 180 / M_PI, 1e-9);
+  }
+  // The upper half moved at the shear speed; the last row is the final strain.
+  EXPECT_NEAR(rows.back()[kStrain], r.spec.shear.final_strain, 1e-3);
+  EXPECT_DOUBLE_EQ(rows.back()[kDv], r.test.cap_displacement());
+  // Quasi-static: the shear force on the upper half is balanced by the lower
+  // half and floor, and the cap's load plus the weight by the floor (the side
+  // walls are frictionless).
+  EXPECT_LT(r.worst_force_balance, 0.05);
+  EXPECT_LT(r.worst_normal_balance, 0.01);
+  // A dense specimen mobilises friction: the stress ratio rises well above 0.
+  double peak = 0;
+  for (const auto& row : rows) peak = std::max(peak, row[kRatio]);
+  EXPECT_GT(peak, 0.3);
+}
+
+TEST(DirectShearProtocol, UnreachableTargetStopsWithAMessage) {
+  DirectShearSpec spec = tiny_protocol_spec();
+  spec.specimen.void_ratio = 0.40;  // far denser than these grains pack
+  DirectShearTest t(spec);
+  try {
+    while (t.phase() < ShearPhase::Consolidate) t.advance(1000);
+    FAIL() << "preparation should have stopped";
+  } catch (const RunError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("reached void ratio"), std::string::npos) << what;
+    EXPECT_NE(what.find("0.400"), std::string::npos) << what;
+  }
+}
