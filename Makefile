@@ -20,10 +20,11 @@ test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) --timeout 600
 
 demo: build
-	$(BUILD)/grainlab demo
+	$(BUILD)/grainlab run --default
 
 bench: build
 	$(BUILD)/bench_scenes
+	$(BUILD)/bench_shear_presets
 
 clean:
 	rm -rf $(BUILD)

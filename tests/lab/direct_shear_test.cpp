@@ -2,6 +2,7 @@
 // for bit like the uninterrupted one.
 #include "io/checkpoint.h"
 #include "lab/direct_shear.h"
+#include "tiny_box.h"
 #include "state_compare.h"
 
 #include <gtest/gtest.h>
@@ -12,21 +13,12 @@ using namespace grainlab;
 namespace {
 
 // A very small box of coarse grains: enough to exercise the protocol quickly.
-DirectShearSpec tiny_spec() {
-  DirectShearSpec spec;
-  spec.box.length = 3.5e-3;
-  spec.box.width = 3.5e-3;
-  spec.box.height = 2.5e-3;
-  spec.grains.shapes = 4;
-  spec.grains.faces = 120;
-  spec.seed = 5;
-  return spec;
-}
+using testing_support::tiny_box_spec;
 
 }  // namespace
 
 TEST(DirectShear, CheckpointRestoreContinuesBitForBit) {
-  const DirectShearSpec spec = tiny_spec();
+  const DirectShearSpec spec = tiny_box_spec();
   DirectShearTest a(spec);
   for (int i = 0; i < 4; ++i) a.advance(250);
   // Through the real checkpoint encoding, as `grainlab run --resume` does.
@@ -45,7 +37,7 @@ TEST(DirectShear, CheckpointRestoreContinuesBitForBit) {
 }
 
 TEST(DirectShear, GrainCountFollowsTheTargetVoidRatio) {
-  const DirectShearSpec spec = tiny_spec();
+  const DirectShearSpec spec = tiny_box_spec();
   DirectShearTest t(spec);
   const double box = spec.box.length * spec.box.width * spec.box.height;
   const double e = box / t.solid_volume() - 1;
