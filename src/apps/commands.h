@@ -19,4 +19,7 @@ Command add_grains_command(CLI::App& app);
 // `grainlab run`: a direct shear test from a config file.
 Command add_run_command(CLI::App& app);
 
+// `grainlab report`: the HTML report of one run folder, or a comparison of several.
+Command add_report_command(CLI::App& app);
+
 }  // namespace grainlab::apps

@@ -1,14 +1,22 @@
 // `grainlab run FILE`: a direct shear test from a TOML config, with progress,
-// series.csv and run.json, checkpoints on an interval and on SIGINT/SIGTERM,
-// and --resume. Every output file is written to a temporary name and renamed.
+// series.csv (with the analysis columns of io/shear_analysis.h) and run.json,
+// ParaView snapshots in paraview/ during shear, the final analysis files in
+// analysis/, checkpoints on an interval and on SIGINT/SIGTERM, --resume, and
+// at the end the HTML report in report/. Every output file is written to a
+// temporary name and renamed.
 #include "apps/commands.h"
+#include "apps/report.h"
 #include "core/error.h"
 #include "core/parallel.h"
 #include "core/timer.h"
-#include "io/checkpoint.h"
+#include "io/analysis_files.h"
 #include "io/atomic_file.h"
+#include "io/checkpoint.h"
 #include "io/config.h"
 #include "io/json.h"
+#include "io/run_summary.h"
+#include "io/shear_analysis.h"
+#include "io/shear_snapshots.h"
 #include "io/table.h"
 #include "lab/direct_shear.h"
 
@@ -33,6 +41,7 @@ struct RunOptions {
   bool use_defaults = false;
   bool resume = false;
   bool quiet = false;
+  bool no_report = false;
 };
 
 void write_series(const DirectShearTest& test, const std::filesystem::path& out) {
@@ -67,6 +76,7 @@ void write_run_json(const DirectShearTest& test, const std::filesystem::path& ou
                 {"dilation_angle_deg", s.final_dilation_angle_deg},
                 {"void_ratio", s.final_void_ratio}};
   j["timings"] = {{"wall_s", wall_s}, {"steps", w.state.step}, {"simulated_s", w.state.time}};
+  add_micromechanics_summary(j, test);
   write_json_file(out / "run.json", j);
 }
 
@@ -84,6 +94,7 @@ int run(const RunOptions& o) {
 
   // Everything that can refuse the run happens before anything is written.
   DirectShearTest test(spec);
+  observe_shear_analysis(test);  // the same on --resume: the rows of both runs then match
   const std::filesystem::path out = spec.output.folder;
   const std::filesystem::path checkpoint = out / "checkpoint.bin";
   if (o.resume) {
@@ -106,6 +117,7 @@ int run(const RunOptions& o) {
     std::filesystem::create_directories(out);
     write_file_atomically(out / "config.toml", to_toml(spec));
   }
+  ShearSnapshots snapshots(out, test, o.resume);
   const auto save = [&] {
     save_checkpoint(checkpoint, test.world().state, test.save_progress(), config_hash(spec));
   };
@@ -131,6 +143,7 @@ int run(const RunOptions& o) {
       write_series(test, out);
       written_rows = test.series().size();
     }
+    snapshots.update(test);
     if (test.phase() != phase) {
       phase = test.phase();
       if (phase == ShearPhase::Shear) shear_start_step = w.state.step;
@@ -168,12 +181,28 @@ int run(const RunOptions& o) {
   }
   save();
   write_series(test, out);
+  write_analysis_files(test, out);
+  snapshots.finish(test);
   write_run_json(test, out, clock.seconds());
   const ShearSummary s = test.summary();
   fmt::print("done in {:.0f} s: peak friction angle {:.1f} deg (stress ratio {:.3f}) at strain {:.3f}; "
-             "peak dilation angle {:.1f} deg\noutputs: {}/series.csv, {}/run.json, {}/checkpoint.bin\n",
+             "peak dilation angle {:.1f} deg\noutputs in {}: series.csv, run.json, checkpoint.bin, analysis/, "
+             "paraview/ ({} snapshots: open grains.pvd, contacts.pvd, walls.pvd in ParaView)\n",
              clock.seconds(), s.peak_friction_angle_deg, s.peak_stress_ratio, s.strain_at_peak_friction,
-             s.peak_dilation_angle_deg, out.string(), out.string(), out.string());
+             s.peak_dilation_angle_deg, out.string(), snapshots.writer().grains().entries().size());
+  if (!o.no_report) {
+    // The series and run.json are written: a report that fails only warns.
+    int rc = -1;
+    try {
+      rc = run_report({out.string()});
+    } catch (const RunError& e) {
+      fmt::print(stderr, "grainlab run: {}\n", e.what());
+    }
+    if (rc != 0)
+      fmt::print(stderr, "grainlab run: warning: the HTML report was not written (see above); the run's files are "
+                         "complete. Write it later with `grainlab report {}`\n",
+                 out.string());
+  }
   return 0;
 }
 
@@ -185,13 +214,16 @@ Command add_run_command(CLI::App& app) {
       "run",
       "run a virtual direct shear test from a TOML config: prepare a specimen at the target density, "
       "consolidate under the servo-held normal stress, shear to the final strain. Writes series.csv "
-      "(one row per strain interval, SI units), run.json (inputs, achieved density, peaks) and "
-      "checkpoint.bin to output.folder");
+      "(one row per strain interval, SI units, with rotation, coordination, fabric and shear-band columns), "
+      "run.json (inputs, achieved density, peaks, Love-Weber stress), checkpoint.bin, analysis/ (final "
+      "displacement profile, shear band, fabric, force chains), paraview/ (grains, contacts and walls every "
+      "output.snapshot_interval of shear strain) and report/index.html to output.folder");
   cmd->add_option("file", o->file, "config file (TOML); see --print-defaults for every key with its unit");
   cmd->add_flag("--print-defaults", o->print_defaults, "print a complete, commented default config and exit");
   cmd->add_flag("--default", o->use_defaults, "run the embedded default (a small box of sub-angular grains)");
   cmd->add_flag("--resume", o->resume, "continue from output.folder/checkpoint.bin (same config)");
   cmd->add_flag("--quiet", o->quiet, "no progress lines");
+  cmd->add_flag("--no-report", o->no_report, "skip the HTML report at the end (write it later with grainlab report)");
   return [cmd, o]() { return *cmd ? run(*o) : -1; };
 }
 

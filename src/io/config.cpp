@@ -86,6 +86,7 @@ const std::array kFields{
     GL_FIELD("output", "folder", output.folder, "where the run writes its files"),
     GL_FIELD("output", "strain_interval", output.strain_interval, "sample series.csv every this much shear strain"),
     GL_FIELD("output", "checkpoint_interval", output.checkpoint_interval, "s of wall-clock time between checkpoints"),
+    GL_FIELD("output", "snapshot_interval", output.snapshot_interval, "ParaView snapshot (paraview/*.vtp) every this much shear strain; 0 = start and end of shear only"),
 };
 
 #undef GL_FIELD
@@ -387,6 +388,8 @@ void validate_spec(const DirectShearSpec& spec_in, const std::string& source, co
   need(o.strain_interval > 0 && o.strain_interval <= sh.final_strain, "output.strain_interval", o.strain_interval,
        fmt::format("> 0 and at most shear.final_strain = {}", sh.final_strain));
   need(o.checkpoint_interval > 0, "output.checkpoint_interval", o.checkpoint_interval, "> 0 (s of wall-clock time)");
+  need(o.snapshot_interval >= 0, "output.snapshot_interval", o.snapshot_interval,
+       ">= 0 (shear strain between ParaView snapshots; 0 = start and end of shear only)");
 
   need(spec.seed <= static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max()), "seed",
        static_cast<double>(spec.seed), "at most 2^63 - 1 (a TOML integer)");

@@ -5,6 +5,7 @@
 #include "core/error.h"
 #include "core/parallel.h"
 #include "geometry/primitives.h"
+#include "io/vtk_reader.h"
 
 #include <fmt/format.h>
 
@@ -263,6 +264,13 @@ SnapshotWriter::SnapshotWriter(std::filesystem::path folder, SnapshotOptions opt
   if (ec)
     throw RunError(fmt::format("cannot create the output folder '{}': {}. Check the path and its permissions",
                                folder_.string(), ec.message()));
+}
+
+void SnapshotWriter::keep_existing_collections() {
+  for (PvdCollection* c : {&grains_, &contacts_, &walls_}) {
+    if (!std::filesystem::exists(c->path())) continue;
+    for (const PvdEntry& e : read_pvd(c->path())) c->add(e.time, e.file);
+  }
 }
 
 std::string SnapshotWriter::file_name(std::string_view kind, int index) {

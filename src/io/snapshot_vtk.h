@@ -85,6 +85,11 @@ class SnapshotWriter {
   // grains' poses at this writer's first snapshot.
   void write(int index, double time, const Model& model, const State& state, const State* reference = nullptr);
 
+  // Adds the entries of grains.pvd, contacts.pvd and walls.pvd already in the
+  // folder (an interrupted run being resumed) to the collections, so that new
+  // snapshots extend them; a missing .pvd is skipped (InputError for a bad one).
+  void keep_existing_collections();
+
   const std::filesystem::path& folder() const { return folder_; }
   const PvdCollection& grains() const { return grains_; }
   const PvdCollection& contacts() const { return contacts_; }

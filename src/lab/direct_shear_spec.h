@@ -86,6 +86,7 @@ struct OutputSpec {
   std::string folder = "runs/direct_shear";
   double strain_interval = 0.001;   // sample every this much shear strain
   double checkpoint_interval = 60;  // s of wall-clock time between checkpoints
+  double snapshot_interval = 0.02;  // ParaView snapshot every this much shear strain; 0 = first and last only
 };
 
 struct DirectShearSpec {

@@ -1,10 +1,15 @@
 // `grainlab run` killed by SIGTERM during shear keeps a checkpoint and no torn
-// file; `--resume` finishes the run, and its series.csv is the same, byte for
-// byte, as that of a run that was never interrupted.
+// file; `--resume` finishes the run, and its series.csv (analysis columns
+// included) is the same, byte for byte, as that of a run that was never
+// interrupted, and its ParaView collections list the same snapshots. A run
+// whose report cannot be written (no Python with matplotlib) still succeeds.
+#include "io/vtk_reader.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <chrono>
+#include <cstdlib>
 #include <csignal>
 #include <filesystem>
 #include <fstream>
@@ -77,7 +82,7 @@ class Resume : public ::testing::Test {
                      << "[box]\nlength = 0.003\nwidth = 0.003\nheight = 0.002\n"
                      << "[specimen]\ndeposition_friction = 0.05\ntolerance = 1.0\n"
                      << "[shear]\nfinal_strain = 0.01\n[numerics]\nthreads = 1\n"
-                     << "[output]\nfolder = \"" << (dir_ / name).string() << "\"\n";
+                     << "[output]\nsnapshot_interval = 0.004\nfolder = \"" << (dir_ / name).string() << "\"\n";
     return p;
   }
   fs::path dir_;
@@ -86,9 +91,13 @@ class Resume : public ::testing::Test {
 }  // namespace
 
 TEST_F(Resume, KilledDuringShearThenResumedGivesTheSameSeries) {
-  // One run straight through and, beside it, the same run stopped by SIGTERM
-  // once shear has written a few rows.
+  // One run straight through, with no Python for its report (the run still
+  // succeeds: its files are complete, and it says how to write the report
+  // later) and, beside it, the same run stopped by SIGTERM once shear has
+  // written a few rows.
+  ::setenv("GRAINLAB_PYTHON", "/nonexistent/python3", 1);
   const pid_t straight = start_run(config("straight"), false, dir_ / "straight.log");
+  ::unsetenv("GRAINLAB_PYTHON");
   const fs::path killed = config("killed");
   const fs::path series = dir_ / "killed" / "series.csv";
   const pid_t pid = start_run(killed, false, dir_ / "killed.log");
@@ -102,8 +111,11 @@ TEST_F(Resume, KilledDuringShearThenResumedGivesTheSameSeries) {
   kill(pid, SIGTERM);
   ASSERT_EQ(wait_exit(pid), 130) << read_file(dir_ / "killed.log");
   ASSERT_EQ(wait_exit(straight), 0) << read_file(dir_ / "straight.log");
+  EXPECT_NE(read_file(dir_ / "straight.log").find("warning: the HTML report was not written"), std::string::npos)
+      << read_file(dir_ / "straight.log");
   const std::string expected = read_file(dir_ / "straight" / "series.csv");
   ASSERT_GT(lines_in(dir_ / "straight" / "series.csv"), 8u);
+  ASSERT_NE(expected.find("rotation_mean_deg"), std::string::npos) << "the analysis columns are compared too";
   EXPECT_TRUE(fs::exists(dir_ / "killed" / "checkpoint.bin"));
   EXPECT_LT(lines_in(series), lines_in(dir_ / "straight" / "series.csv")) << "killed after the end";
   for (const auto& f : fs::directory_iterator(dir_ / "killed"))  // no torn temporary files
@@ -111,5 +123,13 @@ TEST_F(Resume, KilledDuringShearThenResumedGivesTheSameSeries) {
 
   ASSERT_EQ(wait_exit(start_run(killed, true, dir_ / "resumed.log")), 0) << read_file(dir_ / "resumed.log");
   EXPECT_NE(read_file(dir_ / "resumed.log").find("resuming at step"), std::string::npos);
+  EXPECT_TRUE(fs::exists(dir_ / "killed" / "report" / "index.html")) << read_file(dir_ / "resumed.log");
   EXPECT_EQ(read_file(series), expected);
+  // The resumed run kept the snapshots written before the kill and added the rest.
+  for (const char* kind : {"grains", "contacts", "walls"}) {
+    const std::string pvd = std::string("paraview/") + kind + ".pvd";
+    const auto want = grainlab::read_pvd(dir_ / "straight" / pvd);
+    EXPECT_GE(want.size(), 4u) << pvd;  // 0, 0.4 % and 0.8 % of strain, and the end
+    EXPECT_EQ(grainlab::read_pvd(dir_ / "killed" / pvd), want) << pvd;
+  }
 }

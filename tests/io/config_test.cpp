@@ -39,7 +39,7 @@ TEST(Config, DefaultConfigNamesEveryKeyWithAComment) {
   for (const char* key : {"seed =", "[grains]", "d_min =", "[material]", "contact_law =", "wall_friction =",
                           "[box]", "gap =", "[specimen]", "deposition_friction =", "[consolidation]",
                           "normal_stress =", "[shear]", "final_strain =", "[numerics]", "threads =", "[output]",
-                          "checkpoint_interval ="})
+                          "checkpoint_interval =", "snapshot_interval ="})
     EXPECT_TRUE(has(text, key)) << key;
   // Every key line carries a comment.
   std::istringstream in(text);
@@ -54,7 +54,7 @@ TEST(Config, EmptyFileGivesTheDefaults) { expect_same_spec(parse_config("", "emp
 
 TEST(Config, ToTomlRoundTripsEveryField) {
   const DirectShearSpec s = test::all_fields_changed();
-  ASSERT_EQ(config_differences(s, DirectShearSpec{}).size(), 42u) << "a field was left at its default";
+  ASSERT_EQ(config_differences(s, DirectShearSpec{}).size(), 43u) << "a field was left at its default";
   const DirectShearSpec back = parse_config(to_toml(s), "roundtrip.toml");
   expect_same_spec(back, s);
   EXPECT_TRUE(config_differences(back, s).empty());

@@ -89,6 +89,7 @@ inline void expect_same_spec(const DirectShearSpec& a, const DirectShearSpec& b)
   EXPECT_EQ(a.output.folder, b.output.folder);
   EXPECT_EQ(a.output.strain_interval, b.output.strain_interval);
   EXPECT_EQ(a.output.checkpoint_interval, b.output.checkpoint_interval);
+  EXPECT_EQ(a.output.snapshot_interval, b.output.snapshot_interval);
   EXPECT_EQ(a.seed, b.seed);
 }
 
@@ -114,7 +115,7 @@ inline DirectShearSpec all_fields_changed() {
   s.consolidation = {123456.789, 0.005, 0.02};
   s.shear = {1e-4, 0.2};
   s.numerics = {2e-8, 0.15, 100, 5e-4, 2};
-  s.output = {"some \"odd\" folder\\name", 0.002, 300};
+  s.output = {"some \"odd\" folder\\name", 0.002, 300, 0.05};
   return s;
 }
 

@@ -1,0 +1,157 @@
+// `grainlab report RUN_DIR [RUN_DIR ...] [--out DIR]`: the HTML report of one
+// run, or a comparison of several, by scripts/report.py. The script is
+// compiled into the binary (cmake/embed_text.cmake), written to a temporary
+// folder and run with a Python that has matplotlib and numpy (report.h).
+#include "apps/commands.h"
+#include "apps/report.h"
+#include "core/error.h"
+
+#include <fmt/format.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <optional>
+#include <system_error>
+#include <vector>
+
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+extern char** environ;
+
+namespace grainlab::apps {
+
+namespace {
+
+// Runs argv[0] (looked up in PATH when it has no '/') and waits; its output
+// goes to ours, or nowhere when quiet. Exit status, or -1 if it could not start.
+int spawn_and_wait(const std::vector<std::string>& args, bool quiet) {
+  std::vector<std::string> copy = args;
+  std::vector<char*> argv;
+  for (std::string& a : copy) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  if (quiet) {
+    posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
+    posix_spawn_file_actions_adddup2(&actions, 1, 2);
+  }
+  std::fflush(stdout);
+  std::fflush(stderr);
+  pid_t pid = -1;
+  const int rc = posix_spawnp(&pid, argv[0], &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (rc != 0) return -1;
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0) {
+    if (errno != EINTR) return -1;
+  }
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+bool has_matplotlib(const std::string& python) {
+  return spawn_and_wait({python, "-c", "import matplotlib, numpy"}, true) == 0;
+}
+
+// A temporary folder, removed with everything in it when this goes out of scope.
+struct TempFolder {
+  std::filesystem::path path;
+  TempFolder() {
+    std::string pattern = (std::filesystem::temp_directory_path() / "grainlab-report-XXXXXX").string();
+    if (!mkdtemp(pattern.data()))
+      throw RunError(fmt::format("cannot create a temporary folder like '{}' for the report script: {}", pattern,
+                                 std::strerror(errno)));
+    path = pattern;
+  }
+  ~TempFolder() {
+    std::error_code ec;
+    std::filesystem::remove_all(path, ec);
+  }
+};
+
+struct ReportOptions {
+  std::vector<std::string> runs;
+  std::string out;
+  bool print_script = false;
+};
+
+}  // namespace
+
+std::optional<std::string> report_python() {
+  if (const char* forced = std::getenv("GRAINLAB_PYTHON"); forced && *forced)
+    return has_matplotlib(forced) ? std::optional<std::string>(forced) : std::nullopt;
+  for (const char* candidate : {"/usr/bin/python3", "python3"}) {
+    if (candidate[0] == '/' && access(candidate, X_OK) != 0) continue;
+    if (has_matplotlib(candidate)) return std::string(candidate);
+  }
+  return std::nullopt;
+}
+
+std::string missing_matplotlib_message() {
+  const char* forced = std::getenv("GRAINLAB_PYTHON");
+  const std::string which =
+      forced && *forced ? fmt::format("$GRAINLAB_PYTHON ('{}') does not import them (or does not run)", forced)
+                        : std::string("neither /usr/bin/python3 nor python3 on PATH imports them");
+  return fmt::format(
+      "the report needs Python 3 with matplotlib and numpy, and {}. Install them with "
+      "`sudo apt-get install python3-matplotlib` (scripts/setup.sh does), or point GRAINLAB_PYTHON at a "
+      "python3 that has them",
+      which);
+}
+
+int run_report(const std::vector<std::string>& run_dirs, const std::string& out) {
+  const std::optional<std::string> python = report_python();
+  if (!python) {
+    fmt::print(stderr, "grainlab report: {}\n", missing_matplotlib_message());
+    return -1;
+  }
+  const TempFolder tmp;
+  const std::filesystem::path script = tmp.path / "report.py";
+  {
+    std::ofstream f(script, std::ios::binary);
+    f << report_script_text();
+    if (!f.flush())
+      throw RunError(fmt::format("cannot write the report script to '{}': check the space in {}", script.string(),
+                                 tmp.path.parent_path().string()));
+  }
+  std::vector<std::string> args = {*python, script.string()};
+  args.insert(args.end(), run_dirs.begin(), run_dirs.end());
+  if (!out.empty()) args.insert(args.end(), {"--out", out});
+  const int rc = spawn_and_wait(args, false);
+  if (rc < 0) throw RunError(fmt::format("could not start '{}' to run the report", *python));
+  return rc;
+}
+
+Command add_report_command(CLI::App& app) {
+  auto o = std::make_shared<ReportOptions>();
+  auto* cmd = app.add_subcommand(
+      "report",
+      "write the HTML report of a run folder (RUN_DIR/report/index.html: stress ratio, dilation, displacement "
+      "profile and shear band, rotation, coordination, contact-normal rose diagrams with Kanatani's density, "
+      "fabric factor, force chains; paper Figs. 10-17), or with several run folders a comparison report "
+      "(RUN_A/../comparison/report/index.html). Needs Python 3 with matplotlib (python3-matplotlib)");
+  cmd->add_option("runs", o->runs, "run folder(s) written by `grainlab run` (series.csv, run.json, analysis/)");
+  cmd->add_option("--out", o->out, "folder for index.html and the PNGs instead of the default");
+  cmd->add_flag("--print-script", o->print_script, "print the embedded report script (scripts/report.py) and exit");
+  return [cmd, o]() -> int {
+    if (!*cmd) return -1;
+    if (o->print_script) {
+      const std::string text = report_script_text();
+      std::fwrite(text.data(), 1, text.size(), stdout);
+      return 0;
+    }
+    if (o->runs.empty())
+      input_error("grainlab report needs at least one run folder: grainlab report RUN_DIR [RUN_DIR ...] [--out DIR]");
+    const int rc = run_report(o->runs, o->out);
+    return rc < 0 ? 1 : rc;
+  };
+}
+
+}  // namespace grainlab::apps
