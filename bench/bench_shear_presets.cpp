@@ -15,6 +15,7 @@
 // Every run uses the same preparation (deposition friction 0.12 under 100 g,
 // then the cap servo), so the achieved density differs by shape, as it does
 // for one pluviation procedure in the lab; the target tolerance is open.
+#include "core/error.h"
 #include "core/parallel.h"
 #include "core/timer.h"
 #include "lab/direct_shear.h"
@@ -96,18 +97,27 @@ void damping(const Options& o) {
     spec.material.law = ContactLaw::HertzUser;
     spec.material.grain.gamma_n = gn;
     spec.material.grain.gamma_t = gt;
-    const Outcome r = run(spec);
+    Outcome r;
+    try {
+      r = run(spec);
+    } catch (const RunError& e) {
+      fmt::print("{:>8.0f} {:>8.0f}  stopped: {}\n", gn, gt, e.what());
+      continue;
+    }
     peaks.push_back(r.summary.peak_stress_ratio);
     dvs.push_back(r.final_dv * 1e6);
     fmt::print("{:>8.0f} {:>8.0f} {:>12.3f} {:>16.1f} {:>9.0f}\n", gn, gt, r.summary.peak_stress_ratio,
                r.final_dv * 1e6, r.wall_s);
     std::fflush(stdout);
   }
+  if (peaks.size() < 2) return;
   const auto spread = [](const std::vector<double>& v) {
     return *std::max_element(v.begin(), v.end()) - *std::min_element(v.begin(), v.end());
   };
+  double mean = 0;
+  for (double p : peaks) mean += p / peaks.size();
   fmt::print("spread: peak F/N {:.3f} ({:.1f} % of the mean), final d_v {:.1f} um\n", spread(peaks),
-             100 * spread(peaks) / ((peaks[0] + peaks[1] + peaks[2]) / 3), spread(dvs));
+             100 * spread(peaks) / mean, spread(dvs));
 }
 
 }  // namespace
