@@ -10,9 +10,6 @@ namespace grainlab::apps {
 
 using Command = std::function<int()>;
 
-// `grainlab demo`: the settling-bed demonstration.
-Command add_demo_command(CLI::App& app);
-
 // `grainlab grains generate|stats`: synthetic grain sets and grain shape metrics.
 Command add_grains_command(CLI::App& app);
 

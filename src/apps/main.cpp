@@ -18,7 +18,7 @@ int main(int argc, char** argv) {
   int threads = 0;
   app.add_option("--threads", threads, "worker threads (default: all cores)");
 
-  const std::vector<apps::Command> commands = {apps::add_demo_command(app), apps::add_grains_command(app),
+  const std::vector<apps::Command> commands = {apps::add_grains_command(app),
                                                apps::add_run_command(app), apps::add_report_command(app)};
 
   try {
