@@ -200,7 +200,7 @@ void DirectShearTest::servo(World& w, double dt) {
   double k_cap = 0;
   const double tangent = w.model.law == ContactLaw::Hooke ? 1.0 : 1.5;
   for (const PairContact& pc : w.state.wall_pairs)
-    if (pc.a == wall(Cap) && pc.geo.touching && pc.geo.depth > 0) k_cap += tangent * pc.normal_force / pc.geo.depth;
+    if (pc.a == wall(Cap) && in_contact(pc) && pc.geo.depth > 0) k_cap += tangent * pc.normal_force / pc.geo.depth;
   if (k_cap <= 0) {
     cap.v.z() = -cap_speed_limit_;  // not touching yet: come down
     progress_.servo_integral = 0;
@@ -224,7 +224,7 @@ bool DirectShearTest::at_rest(bool strict) const {
   double elastic = 0;
   for (const auto* list : {&world_.state.pairs, &world_.state.wall_pairs})
     for (const PairContact& pc : *list)
-      if (pc.geo.touching) elastic += 0.4 * pc.normal_force * pc.geo.depth;
+      if (in_contact(pc)) elastic += 0.4 * pc.normal_force * pc.geo.depth;
   return world_.kinetic_energy() < 1e-2 * elastic;
 }
 
@@ -334,33 +334,32 @@ double DirectShearTest::achieved_relative_density() const {
 
 double DirectShearTest::coordination_number() const {
   std::size_t contacts = 0;
-  for (const PairContact& pc : world_.state.pairs) contacts += pc.geo.touching;
+  for (const PairContact& pc : world_.state.pairs) contacts += in_contact(pc);
   return 2.0 * contacts / std::max<std::size_t>(1, world_.model.bodies.size());
 }
 
 double DirectShearTest::unbalanced_force_ratio() const {
-  double resultant = 0, contact = 0;
-  std::size_t n_contacts = 0;
+  double resultant = 0;
   for (const Vec3& f : world_.body_forces()) resultant += f.norm();
-  for (const PairContact& pc : world_.state.pairs)
-    if (pc.geo.touching) contact += pc.force.norm(), ++n_contacts;
-  for (const PairContact& pc : world_.state.wall_pairs)
-    if (pc.geo.touching) contact += pc.force.norm(), ++n_contacts;
-  if (n_contacts == 0 || contact <= 0) return 1;
-  return (resultant / std::max<std::size_t>(1, world_.body_forces().size())) / (contact / n_contacts);
+  return per_mean_contact_force(resultant / std::max<std::size_t>(1, world_.body_forces().size()));
 }
 
 double DirectShearTest::averaged_unbalanced_force_ratio() const {
   const auto& sum = progress_.force_sum;
   if (progress_.window_steps == 0 || sum.empty()) return unbalanced_force_ratio();
-  double resultant = 0, contact = 0;
-  std::size_t n_contacts = 0;
+  double resultant = 0;
   for (const Vec3& f : sum) resultant += f.norm() / progress_.window_steps;
+  return per_mean_contact_force(resultant / sum.size());
+}
+
+double DirectShearTest::per_mean_contact_force(double force) const {
+  double contact = 0;
+  std::size_t n_contacts = 0;
   for (const auto* list : {&world_.state.pairs, &world_.state.wall_pairs})
     for (const PairContact& pc : *list)
-      if (pc.geo.touching) contact += pc.force.norm(), ++n_contacts;
+      if (in_contact(pc)) contact += pc.force.norm(), ++n_contacts;
   if (n_contacts == 0 || contact <= 0) return 1;
-  return (resultant / sum.size()) / (contact / n_contacts);
+  return force / (contact / n_contacts);
 }
 
 double DirectShearTest::inertial_number() const {

@@ -156,6 +156,8 @@ class DirectShearTest {
   // averaged unbalanced-force ratio too. The compaction accepts 5 % and skips
   // the ratio: the consolidation that follows settles both.
   bool at_rest(bool strict) const;
+  // force over the mean magnitude of the contact forces (1 with no contacts).
+  double per_mean_contact_force(double force) const;
   void record_sample();
   double box_area() const { return spec_.box.length * spec_.box.width; }
   Index wall(WallRole r) const { return static_cast<Index>(r); }
