@@ -17,9 +17,9 @@ using namespace grainlab;
 namespace {
 
 void run_scene(const char* label, SettlingBedSpec spec, int settle, int steps) {
-  set_thread_count(2);
   SettlingBed bed = make_settling_bed(spec);
   World& w = bed.world;
+  w.settings.threads = 2;
   const double dt = 0.2 * w.critical_time_step();
   Stopwatch settle_clock;
   for (int i = 0; i < settle; ++i) w.step(dt);
@@ -30,7 +30,7 @@ void run_scene(const char* label, SettlingBedSpec spec, int settle, int steps) {
   const World settled = w;
   for (int threads : {1, 2}) {
     World run = settled;
-    set_thread_count(threads);
+    run.settings.threads = threads;
     run.profile = StepProfile{};
     Stopwatch clock;
     for (int i = 0; i < steps; ++i) run.step(dt);

@@ -8,11 +8,13 @@
 
 namespace grainlab::testing_support {
 
-// True if bodies, walls and the tangential springs of the pairs are identical bit for bit.
+// True if bodies, walls, the candidate pairs with their warm-start caches and
+// the contacts with their tangential springs are identical bit for bit.
 inline bool same_state_bits(const State& a, const State& b) {
   const auto eq = [](const auto& x, const auto& y) { return std::memcmp(x.data(), y.data(), sizeof(x)) == 0; };
   if (a.step != b.step || a.bodies.size() != b.bodies.size() || a.walls.size() != b.walls.size() ||
-      a.pairs.size() != b.pairs.size())
+      a.pairs.size() != b.pairs.size() || a.wall_pairs.size() != b.wall_pairs.size() ||
+      a.contacts.size() != b.contacts.size() || a.wall_contacts.size() != b.wall_contacts.size())
     return false;
   for (std::size_t i = 0; i < a.bodies.size(); ++i) {
     const BodyState &p = a.bodies[i], &q = b.bodies[i];
@@ -20,8 +22,20 @@ inline bool same_state_bits(const State& a, const State& b) {
   }
   for (std::size_t k = 0; k < a.walls.size(); ++k)
     if (!eq(a.walls[k].x, b.walls[k].x) || !eq(a.walls[k].v, b.walls[k].v)) return false;
-  for (std::size_t k = 0; k < a.pairs.size(); ++k)
-    if (a.pairs[k].key() != b.pairs[k].key() || !eq(a.pairs[k].xi, b.pairs[k].xi)) return false;
+  for (const auto* list : {&a.pairs, &a.wall_pairs}) {
+    const auto& other = list == &a.pairs ? b.pairs : b.wall_pairs;
+    for (std::size_t k = 0; k < list->size(); ++k) {
+      const PairCache &p = (*list)[k].cache, &q = other[k].cache;
+      if ((*list)[k].key() != other[k].key() || !eq(p.dir, q.dir) || p.hint_a != q.hint_a ||
+          p.hint_b != q.hint_b || p.warm != q.warm)
+        return false;
+    }
+  }
+  for (const auto* list : {&a.contacts, &a.wall_contacts}) {
+    const auto& other = list == &a.contacts ? b.contacts : b.wall_contacts;
+    for (std::size_t k = 0; k < list->size(); ++k)
+      if (!(*list)[k].same_key(other[k]) || !eq((*list)[k].xi, other[k].xi)) return false;
+  }
   return true;
 }
 

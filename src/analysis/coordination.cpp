@@ -7,15 +7,11 @@ namespace grainlab::analysis {
 
 std::vector<Index> contact_counts(const State& s, bool include_walls) {
   std::vector<Index> c(s.bodies.size(), 0);
-  for (const PairContact& pc : s.pairs) {
-    if (!in_contact(pc)) continue;
-    ++c[pc.a];
-    ++c[pc.b];
-  }
-  if (include_walls) {
-    for (const PairContact& pc : s.wall_pairs)
-      if (in_contact(pc)) ++c[pc.b];
-  }
+  for_each_touching_pair(s.contacts, [&c](Index a, Index b) {
+    ++c[a];
+    ++c[b];
+  });
+  if (include_walls) for_each_touching_pair(s.wall_contacts, [&c](Index, Index b) { ++c[b]; });
   return c;
 }
 

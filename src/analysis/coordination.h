@@ -1,7 +1,8 @@
 // Coordination number (paper Eq. 22) and per-grain contact counts.
 //
-// A contact is a grain-grain pair that is in_contact() (dynamics/state.h, the
-// criterion World::contact_count() uses). Let c_i be the number of contacts of
+// A contact here is a grain-grain PAIR touching at one place or more: it has
+// at least one in_contact() sub-contact (dynamics/state.h, the one criterion;
+// for_each_touching_pair counts each pair once). Let c_i be the number of contacts of
 // grain i. Each contact has two grains, so sum_i c_i = 2 N_c and
 //     CN = 2 N_c / N_p = (1/N_p) sum_i c_i,
 // the mean number of contacts per grain. Over a subset S of the grains (the
@@ -22,8 +23,8 @@
 
 namespace grainlab::analysis {
 
-// Number of contacts of each body (one entry per body). Grain-grain only,
-// unless include_walls.
+// Number of touching pairs of each body (one entry per body). Grain-grain
+// only, unless include_walls.
 std::vector<Index> contact_counts(const State& s, bool include_walls = false);
 
 // CN = 2 N_c / N_p over all grains, or CN_S over the grains in `mask` (see

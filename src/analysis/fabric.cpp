@@ -13,7 +13,7 @@ namespace grainlab::analysis {
 std::vector<Vec3> contact_normals(const State& s, const GrainMask* mask) {
   check_mask(mask, s.bodies.size(), "contact_normals");
   std::vector<Vec3> n;
-  for (const PairContact& pc : s.pairs) {
+  for (const Contact& pc : s.contacts) {
     if (!in_contact(pc)) continue;
     const int copies = mask ? ((*mask)[pc.a] != 0) + ((*mask)[pc.b] != 0) : 1;
     for (int c = 0; c < copies; ++c) n.push_back(pc.geo.normal);

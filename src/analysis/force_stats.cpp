@@ -9,7 +9,7 @@ namespace grainlab::analysis {
 ForceStats force_stats(const State& s) {
   ForceStats st;
   double sum = 0;
-  for (const PairContact& pc : s.pairs) {
+  for (const Contact& pc : s.contacts) {
     if (!in_contact(pc)) continue;
     ++st.contacts;
     sum += pc.normal_force;
@@ -18,8 +18,8 @@ ForceStats force_stats(const State& s) {
   if (st.contacts == 0) return st;
   st.mean = sum / static_cast<double>(st.contacts);
   double var = 0;
-  for (std::size_t k = 0; k < s.pairs.size(); ++k) {
-    const PairContact& pc = s.pairs[k];
+  for (std::size_t k = 0; k < s.contacts.size(); ++k) {
+    const Contact& pc = s.contacts[k];
     if (!in_contact(pc)) continue;
     var += (pc.normal_force - st.mean) * (pc.normal_force - st.mean);
     if (pc.normal_force > st.mean) st.strong.push_back(static_cast<Index>(k));

@@ -2,7 +2,7 @@
 // up the force chains.
 //
 // Over the grain-grain contacts (in_contact(), dynamics/state.h) with normal
-// force magnitudes f_c = PairContact::normal_force (N):
+// force magnitudes f_c = Contact::normal_force (N):
 //     mean <f> = (1/N) sum f_c,   max,   std = sqrt((1/N) sum (f_c - <f>)^2)
 // (population standard deviation: these are all the contacts, not a sample).
 // A contact is strong when f_c > <f> (Radjai et al. 1998: the strong network,
@@ -23,7 +23,7 @@ struct ForceStats {
   std::size_t contacts = 0;       // grain-grain contacts
   double mean = 0, max = 0, std_dev = 0;  // N; all 0 with no contacts
   double strong_fraction = 0;     // share of contacts with f > mean
-  std::vector<Index> strong;      // indices into State::pairs of the strong contacts, in pair order
+  std::vector<Index> strong;      // indices into State::contacts of the strong contacts, in pair order
 };
 
 ForceStats force_stats(const State& s);

@@ -12,12 +12,12 @@ StressTensor love_weber_stress(const State& s, double volume, bool include_walls
   if (!(volume > 0) || !std::isfinite(volume))
     throw std::invalid_argument(fmt::format("love_weber_stress: volume {} m^3 must be positive", volume));
   Mat3 sum = Mat3::Zero();
-  for (const PairContact& pc : s.pairs) {
+  for (const Contact& pc : s.contacts) {
     if (!in_contact(pc)) continue;
     sum += pc.force * (s.bodies[pc.b].x - s.bodies[pc.a].x).transpose();
   }
   if (include_walls) {
-    for (const PairContact& pc : s.wall_pairs) {
+    for (const Contact& pc : s.wall_contacts) {
       if (!in_contact(pc)) continue;
       sum += (-pc.force) * (pc.geo.point - s.bodies[pc.b].x).transpose();
     }

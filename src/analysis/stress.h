@@ -8,7 +8,7 @@
 //     int_p sigma^t dV = sum_c f^c (x) x^c + m g (x) x_p = sum_c f^c (x) (x^c - x_p),
 // the last step by force balance sum_c f^c + m g = 0: weight drops out.
 // Summing over the grains of a specimen of volume V, sigma = -sigma^t:
-//  * grain-grain contact, force F on b (PairContact::force), -F on a:
+//  * grain-grain contact, force F on b (Contact::force), -F on a:
 //        F (x) (x^c - x_b) - F (x) (x^c - x_a) = -F (x) (x_b - x_a),
 //    so it adds F (x) l with the branch vector l = x_b - x_a between the
 //    centres (the contact point drops out);
@@ -23,7 +23,7 @@
 //
 // The sum is symmetric when each grain is also in moment balance; its
 // antisymmetric part measures how far the sample is from it (and the patch
-// damping torques, PairContact::torque, which carry no force, are left out).
+// damping torques, Contact::torque, which carry no force, are left out).
 // The report gives the symmetric part and that asymmetry.
 #pragma once
 

@@ -26,7 +26,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
   }
-  set_thread_count(threads);
+  set_default_thread_count(threads);
   try {
     for (const auto& run : commands) {
       const int rc = run();

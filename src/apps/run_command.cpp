@@ -90,10 +90,10 @@ int run(const RunOptions& o) {
                 "embedded default; `grainlab run --print-defaults > test.toml` writes one to edit");
   const DirectShearSpec spec = o.use_defaults ? parse_config(default_config_toml(), "<embedded default>")
                                               : load_config(o.file);
-  if (spec.numerics.threads > 0) set_thread_count(spec.numerics.threads);
 
   // Everything that can refuse the run happens before anything is written.
   DirectShearTest test(spec);
+  test.world().settings.threads = spec.numerics.threads;
   observe_shear_analysis(test);  // the same on --resume: the rows of both runs then match
   const std::filesystem::path out = spec.output.folder;
   const std::filesystem::path checkpoint = out / "checkpoint.bin";
@@ -128,7 +128,7 @@ int run(const RunOptions& o) {
              w.model.bodies.size(), spec.grains.folder.empty() ? spec.grains.preset : spec.grains.folder,
              spec.box.length * 1e3, spec.box.width * 1e3, spec.box.height * 1e3,
              spec.consolidation.normal_stress * 1e-3, test.time_step(), w.model.density_scale,
-             test.shear_speed() * 1e3, thread_count());
+             test.shear_speed() * 1e3, resolve_threads(w.settings.threads));
   std::signal(SIGINT, on_stop_signal);
   std::signal(SIGTERM, on_stop_signal);
 

@@ -1,31 +1,54 @@
-// Thin wrapper over OpenMP so that the rest of the code never spells pragmas
-// with varying schedules. Every parallel loop in grainlab writes only to slots
-// owned by its own index, so results do not depend on the thread count.
+// Thin wrapper over OpenMP: the only file that spells pragmas or omp_* calls,
+// so the threading policy lives in one place. Every parallel loop in grainlab
+// writes only to slots owned by its own index (or reduces with an
+// order-independent operation such as max), so results do not depend on the
+// thread count. The thread count is passed per call (a World carries its own,
+// WorldSettings::threads): nothing here changes process-wide state.
 #pragma once
 
 #include <omp.h>
 
+#include <algorithm>
 #include <cstddef>
 
 namespace grainlab {
 
-// Sets the number of threads used by parallel_for (0 = OpenMP default).
-inline void set_thread_count(int n) {
+// Threads a parallel loop uses for a requested count (0 = the OpenMP default, all cores).
+inline int resolve_threads(int requested) { return requested > 0 ? requested : omp_get_max_threads(); }
+
+// Threads a loop with no explicit count uses (the OpenMP default).
+inline int thread_count() { return omp_get_max_threads(); }
+
+// Sets the process default (what threads = 0 means). Only a program's main()
+// calls it (the CLI's --threads); a World takes WorldSettings::threads.
+inline void set_default_thread_count(int n) {
   if (n > 0) omp_set_num_threads(n);
 }
 
-inline int thread_count() { return omp_get_max_threads(); }
-
-// Calls f(i) for i in [0, n). Chunks are dynamic: loop bodies of uneven cost
-// (narrowphase pairs) balance well; order of calls is unspecified.
+// Calls f(i) for i in [0, n) on `threads` threads (0 = default). Chunks are
+// dynamic: loop bodies of uneven cost (narrowphase pairs) balance well; order
+// of calls is unspecified. Loops of at most one chunk run serially.
 template <typename F>
-void parallel_for(std::ptrdiff_t n, F&& f, std::ptrdiff_t chunk = 64) {
+void parallel_for(std::ptrdiff_t n, F&& f, std::ptrdiff_t chunk = 64, int threads = 0) {
   if (n <= chunk) {
     for (std::ptrdiff_t i = 0; i < n; ++i) f(i);
     return;
   }
-#pragma omp parallel for schedule(dynamic, chunk)
+  const int t = resolve_threads(threads);
+#pragma omp parallel for schedule(dynamic, chunk) num_threads(t)
   for (std::ptrdiff_t i = 0; i < n; ++i) f(i);
+}
+
+// Calls f(i) for i in [0, n) and returns the maximum of what it returns (and
+// of `init`), on `threads` threads (0 = default) when n > min_parallel, else
+// serially. Static schedule; max is exact, so the result is thread-independent.
+template <typename F>
+double parallel_max(std::ptrdiff_t n, F&& f, double init, std::ptrdiff_t min_parallel, int threads = 0) {
+  double m = init;
+  const int t = resolve_threads(threads);
+#pragma omp parallel for schedule(static) reduction(max : m) num_threads(t) if (n > min_parallel)
+  for (std::ptrdiff_t i = 0; i < n; ++i) m = std::max(m, f(i));
+  return m;
 }
 
 }  // namespace grainlab

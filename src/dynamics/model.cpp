@@ -4,6 +4,9 @@
 #include "core/error.h"
 #include "geometry/convex_hull.h"
 #include "geometry/mass_properties.h"
+#include "geometry/primitives.h"
+
+#include <Eigen/Eigenvalues>
 
 #include <cmath>
 #include <numbers>
@@ -15,6 +18,7 @@ Index Model::add_sphere_shape(double radius, std::string name) {
     input_error("sphere shape '{}': radius {} m must be positive and finite", name, radius);
   Shape s;
   s.kind = Shape::Kind::Sphere;
+  s.isotropic = true;
   s.name = std::move(name);
   s.volume = 4.0 / 3.0 * std::numbers::pi * radius * radius * radius;
   // Solid sphere: I = (2/5) m r^2 = (2/5) rho V r^2.
@@ -43,6 +47,78 @@ Index Model::add_mesh_shape(const TriMesh& mesh, std::string name) {
   }
   const ConvexHull hull = convex_hull(s.mesh.vertices);
   s.hull = ConvexPolytope(hull.vertices, hull.adjacency_offsets, hull.adjacency);
+  shapes.push_back(std::move(s));
+  return static_cast<Index>(shapes.size() - 1);
+}
+
+// Mass properties of a compound: volumes add; the centroid is the
+// volume-weighted mean C = sum V_k c_k / V; the inertia about C (per unit
+// density) is sum J_k + V_k (|d_k|^2 I - d_k d_k^T), d_k = c_k - C (parallel
+// axes), J_k the part's own inertia about c_k (sphere: (2/5) V r^2 I). Its
+// eigenvectors A (right-handed) give the principal frame: p' = A^T (p - C).
+Index Model::add_compound_shape(const std::vector<CompoundPart>& parts, std::string name) {
+  if (parts.empty() || parts.size() > static_cast<std::size_t>(kMaxCompoundPieces))
+    input_error("compound shape '{}': {} parts; give 1 to {}", name, parts.size(), kMaxCompoundPieces);
+  std::vector<double> vol(parts.size());
+  std::vector<Vec3> cen(parts.size());
+  std::vector<Mat3> own(parts.size());
+  double volume = 0;
+  Vec3 c = Vec3::Zero();
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    const CompoundPart& p = parts[k];
+    if (p.radius > 0) {
+      vol[k] = 4.0 / 3.0 * std::numbers::pi * p.radius * p.radius * p.radius;
+      cen[k] = p.center;
+      own[k] = (0.4 * vol[k] * p.radius * p.radius) * Mat3::Identity();
+    } else {
+      const MassProperties mp = mass_properties(p.mesh);
+      if (!(mp.volume > 0)) input_error("compound shape '{}': part {} has no volume", name, k);
+      vol[k] = mp.volume;
+      cen[k] = mp.centroid;
+      own[k] = mp.inertia;
+    }
+    volume += vol[k];
+    c += vol[k] * cen[k];
+  }
+  c /= volume;
+  Mat3 inertia = Mat3::Zero();
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    const Vec3 d = cen[k] - c;
+    inertia += own[k] + vol[k] * (d.squaredNorm() * Mat3::Identity() - d * d.transpose());
+  }
+  const Eigen::SelfAdjointEigenSolver<Mat3> eig(inertia);
+  Mat3 axes = eig.eigenvectors();
+  if (axes.determinant() < 0) axes.col(2) = -axes.col(2);
+  Shape s;
+  s.kind = Shape::Kind::Compound;
+  s.name = std::move(name);
+  s.volume = volume;
+  s.unit_moments = eig.eigenvalues();
+  s.equivalent_radius = std::cbrt(3.0 * volume / (4.0 * std::numbers::pi));
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    const CompoundPart& p = parts[k];
+    CompoundPiece piece;
+    piece.offset = axes.transpose() * (cen[k] - c);
+    TriMesh local = p.radius > 0 ? icosphere(p.radius, 2) : p.mesh;  // about the part's centre
+    if (p.radius > 0) {
+      piece.kind = Shape::Kind::Sphere;
+      piece.radius = p.radius;
+    } else {
+      for (Vec3& v : local.vertices) v = axes.transpose() * (v - cen[k]);
+      piece.kind = Shape::Kind::Polytope;
+      const ConvexHull hull = convex_hull(local.vertices);
+      piece.hull = ConvexPolytope(hull.vertices, hull.adjacency_offsets, hull.adjacency);
+    }
+    // The drawn surface: every part's mesh in the principal frame.
+    const Index base = static_cast<Index>(s.mesh.vertices.size());
+    for (const Vec3& v : local.vertices) {
+      s.mesh.vertices.push_back(piece.offset + v);
+      s.bounding_radius = std::max(s.bounding_radius, s.mesh.vertices.back().norm());
+    }
+    if (p.radius > 0) s.bounding_radius = std::max(s.bounding_radius, piece.offset.norm() + p.radius);
+    for (const auto& f : local.faces) s.mesh.faces.push_back({f[0] + base, f[1] + base, f[2] + base});
+    s.compound.pieces.push_back(std::move(piece));
+  }
   shapes.push_back(std::move(s));
   return static_cast<Index>(shapes.size() - 1);
 }

@@ -7,6 +7,8 @@
 // scale s, so mass = rho V s^3 and inertia = rho J s^5 (V, J of the shape at s = 1).
 #pragma once
 
+#include "collision/compound.h"
+#include "collision/shape_kind.h"
 #include "collision/shapes.h"
 #include "core/types.h"
 #include "dynamics/material.h"
@@ -18,15 +20,26 @@
 namespace grainlab {
 
 struct Shape {
-  enum class Kind { Sphere = 0, Polytope = 1 };
+  using Kind = ShapeKind;  // Sphere, Polytope or Compound (collision/shape_kind.h)
   Kind kind = Kind::Sphere;
   std::string name;
+  bool isotropic = false;            // inertia is a multiple of the identity (spheres): free rotation is exact
   double volume = 0;                 // m^3 at scale 1
   Vec3 unit_moments = Vec3::Zero();  // principal moments per unit density at scale 1 (m^5)
   double equivalent_radius = 0;      // radius of the sphere of equal volume, scale 1 (m)
   double bounding_radius = 0;        // max distance of the surface from the centroid, scale 1 (m)
   ConvexPolytope hull;               // polytope shapes: convex hull in the principal frame
-  TriMesh mesh;                      // polytope shapes: the surface in the principal frame
+  TriMesh mesh;                      // polytope and compound shapes: the surface in the principal frame
+  CompoundShape compound;            // compound shapes: the pieces in the principal frame
+};
+
+// One piece of a compound shape as given to Model::add_compound_shape: a
+// sphere (radius > 0, centred at `center`) or, with radius 0, the convex hull
+// of a closed mesh; coordinates of the shape's own frame (m).
+struct CompoundPart {
+  double radius = 0;
+  Vec3 center = Vec3::Zero();
+  TriMesh mesh;
 };
 
 // Constants of one body, derived from its shape, material and scale.
@@ -45,7 +58,7 @@ struct BodyModel {
 // A rigid wall. Planes are half-spaces (solid behind the normal, the local +z
 // axis); boxes are solid oriented boxes. Their motion is prescribed.
 struct WallModel {
-  enum class Kind { Plane = 0, Box = 1 };
+  using Kind = ShapeKind;  // Plane or Box (collision/shape_kind.h)
   Kind kind = Kind::Plane;
   std::string name;
   Index material = 0;
@@ -65,6 +78,10 @@ struct Model {
   // collision shape (exact for convex grains), its mesh gives mass properties.
   Index add_sphere_shape(double radius, std::string name = "sphere");
   Index add_mesh_shape(const TriMesh& mesh, std::string name);
+  // A compound of disjoint convex parts (1 to kMaxCompoundPieces; volumes and
+  // inertias add, so overlapping parts would count twice), moved to its
+  // principal frame.
+  Index add_compound_shape(const std::vector<CompoundPart>& parts, std::string name);
   Index add_material(const Material& m);
 
   // Coefficients of a material pair (valid after finalize()).

@@ -1,11 +1,13 @@
 // World::step and its phases (see world.h for the recipe).
 //
 // Determinism: the broadphase emits pairs sorted by (a, b); each parallel loop
-// writes only its own pair's or body's slot; forces are summed per body in a
-// serial pass in pair order. So 1 and N threads give bit-identical states.
+// writes only its own pair's, contact's or body's slot; the contacts are
+// compacted serially in pair order and forces are summed per body in a serial
+// pass in contact order. So 1 and N threads give bit-identical states.
 #include "dynamics/world.h"
 
-#include "collision/narrowphase.h"
+#include "collision/dispatch.h"
+#include "collision/wall_bound.h"
 #include "core/error.h"
 #include "core/parallel.h"
 #include "core/timer.h"
@@ -20,11 +22,11 @@ namespace grainlab {
 
 namespace {
 
-// Keeps the history of pairs that survive from `old_pairs` into `pairs`
-// (both sorted by key): a merge join, no hashing.
-void carry_history(const std::vector<PairContact>& old_pairs, std::vector<PairContact>& pairs) {
+// Keeps the warm-start caches of pairs that survive from `old_pairs` into
+// `pairs` (both sorted by key): a merge join, no hashing.
+void carry_history(const std::vector<CandidatePair>& old_pairs, std::vector<CandidatePair>& pairs) {
   std::size_t j = 0;
-  for (PairContact& p : pairs) {
+  for (CandidatePair& p : pairs) {
     const auto k = p.key();
     while (j < old_pairs.size() && old_pairs[j].key() < k) ++j;
     if (j < old_pairs.size() && old_pairs[j].key() == k) p = old_pairs[j];
@@ -86,7 +88,7 @@ Index World::add_box_wall(const Vec3& center, const Vec3& half, const Quat& q, I
 
 double World::critical_time_step() {
   model.finalize();
-  return grainlab::critical_time_step(model, expected_overlap_fraction).critical;
+  return grainlab::critical_time_step(model, settings.expected_overlap_fraction).critical;
 }
 
 void World::prepare() {
@@ -97,10 +99,10 @@ void World::prepare() {
   force_.assign(n, Vec3::Zero());
   torque_.assign(n, Vec3::Zero());
   kinetic_.assign(n, 0.0);
-  if (skin <= 0) {
+  if (settings.skin <= 0) {
     double r_min = std::numeric_limits<double>::infinity();
     for (const BodyModel& b : model.bodies) r_min = std::min(r_min, b.radius);
-    skin = std::isfinite(r_min) ? 0.2 * r_min : 1e-3;
+    settings.skin = std::isfinite(r_min) ? 0.2 * r_min : 1e-3;
   }
   // No forced rebuild: a restored State carries its own candidate pairs, and
   // added bodies make x_at_rebuild the wrong size, which forces one.
@@ -112,7 +114,7 @@ void World::step(double dt) {
   if (!prepared_) prepare();
   if (dt != checked_dt_) {
     if (!(dt > 0 && std::isfinite(dt))) input_error("time step {} s must be positive", dt);
-    const TimeStepEstimate est = grainlab::critical_time_step(model, expected_overlap_fraction);
+    const TimeStepEstimate est = grainlab::critical_time_step(model, settings.expected_overlap_fraction);
     if (dt > est.critical) {
       const double ratio = dt / est.critical;
       input_error(
@@ -121,7 +123,7 @@ void World::step(double dt) {
           "explode. Use a time step of at most {:.3g} s (about a tenth of the critical step is "
           "accurate), or scale the density by at least {:.3g} (numerics.density_scaling) for a "
           "quasi-static test",
-          dt, est.critical, est.limiting_body, est.stiffness, expected_overlap_fraction,
+          dt, est.critical, est.limiting_body, est.stiffness, settings.expected_overlap_fraction,
           est.critical, ratio * ratio);
     }
     checked_dt_ = dt;
@@ -153,31 +155,32 @@ void World::step(double dt) {
 
 void World::compute_bounds() {
   const std::size_t n = state.bodies.size();
-  double max_sq = 0;
   const bool have_ref = state.x_at_rebuild.size() == n;
-#pragma omp parallel for schedule(static) reduction(max : max_sq) if (n > 256)
-  for (std::size_t i = 0; i < n; ++i) {
-    rot_[i] = state.bodies[i].q.toRotationMatrix();
-    if (have_ref) max_sq = std::max(max_sq, (state.bodies[i].x - state.x_at_rebuild[i]).squaredNorm());
-  }
+  const double max_sq = parallel_max(
+      static_cast<std::ptrdiff_t>(n),
+      [&](std::ptrdiff_t i) {
+        rot_[i] = state.bodies[i].q.toRotationMatrix();
+        return have_ref ? (state.bodies[i].x - state.x_at_rebuild[i]).squaredNorm() : 0.0;
+      },
+      0.0, 256, settings.threads);
   max_move_sq_ = have_ref ? max_sq : std::numeric_limits<double>::infinity();
 }
 
 void World::broadphase() {
   const std::size_t n = state.bodies.size();
   // Grain-grain candidates: rebuilt only when a grain has moved more than skin/2.
-  if (state.rebuild_pairs || max_move_sq_ > 0.25 * skin * skin) {
+  if (state.rebuild_pairs || max_move_sq_ > 0.25 * settings.skin * settings.skin) {
     for (std::size_t i = 0; i < n; ++i) {
-      const double r = model.bodies[i].bounding_radius + 0.5 * skin;
+      const double r = model.bodies[i].bounding_radius + 0.5 * settings.skin;
       aabb_[i] = {state.bodies[i].x.array() - r, state.bodies[i].x.array() + r};
     }
     sap_.find_pairs(aabb_, candidates_);
     scratch_.resize(candidates_.size());
     for (std::size_t k = 0; k < candidates_.size(); ++k) {
-      scratch_[k] = PairContact{};
+      scratch_[k] = CandidatePair{};
       scratch_[k].a = candidates_[k].first;
       scratch_[k].b = candidates_[k].second;
-      scratch_[k].dir = (state.bodies[scratch_[k].b].x - state.bodies[scratch_[k].a].x);
+      scratch_[k].cache.dir = (state.bodies[scratch_[k].b].x - state.bodies[scratch_[k].a].x);
     }
     carry_history(state.pairs, scratch_);
     state.pairs.swap(scratch_);
@@ -187,27 +190,19 @@ void World::broadphase() {
     ++profile.broadphase_rebuilds;
   }
   // Wall-grain candidates: few walls, rebuilt every step (walls move).
+  wall_rot_.resize(state.walls.size());
+  for (std::size_t w = 0; w < state.walls.size(); ++w) wall_rot_[w] = state.walls[w].q.toRotationMatrix();
   scratch_.clear();
   for (std::size_t w = 0; w < model.walls.size(); ++w) {
-    const WallState& ws = state.walls[w];
-    const WallModel& wm = model.walls[w];
-    const Vec3 normal = ws.q * Vec3::UnitZ();
-    Aabb box;
-    if (wm.kind == WallModel::Kind::Box) {
-      const Vec3 ext = ws.q.toRotationMatrix().cwiseAbs() * wm.half;
-      box = {ws.x - ext, ws.x + ext};
-    }
+    const WallBound bound = wall_bound(posed_wall(static_cast<Index>(w)));
+    const Vec3& wx = state.walls[w].x;
     for (std::size_t i = 0; i < n; ++i) {
       const Vec3& x = state.bodies[i].x;
-      const double r = model.bodies[i].bounding_radius;
-      const bool near = wm.kind == WallModel::Kind::Plane
-                            ? normal.dot(x - ws.x) < r
-                            : box.overlaps(Aabb{x.array() - r, x.array() + r});
-      if (!near) continue;
-      PairContact pc;
+      if (!bound.may_touch(x, model.bodies[i].bounding_radius)) continue;
+      CandidatePair pc;
       pc.a = static_cast<Index>(w);
       pc.b = static_cast<Index>(i);
-      pc.dir = x - ws.x;
+      pc.cache.dir = x - wx;
       scratch_.push_back(pc);
     }
   }
@@ -215,79 +210,86 @@ void World::broadphase() {
   state.wall_pairs.swap(scratch_);
 }
 
-ContactResult World::collide_pair(PairContact& pc) const {
-  const BodyModel& ma = model.bodies[pc.a];
-  const BodyModel& mb = model.bodies[pc.b];
-  const BodyState& sa = state.bodies[pc.a];
-  const BodyState& sb = state.bodies[pc.b];
-  // Bounding spheres apart: no contact, no GJK.
-  const double reach = ma.bounding_radius + mb.bounding_radius;
-  if ((sb.x - sa.x).squaredNorm() > reach * reach) {
-    pc.warm = false;  // the last normal will be stale when they meet
-    return {};
-  }
-  const Shape& sha = model.shapes[ma.shape];
-  const Shape& shb = model.shapes[mb.shape];
-  const bool poly_a = sha.kind == Shape::Kind::Polytope, poly_b = shb.kind == Shape::Kind::Polytope;
-  if (!poly_a && !poly_b)
-    return collide(SphereShape{sa.x, ma.radius}, SphereShape{sb.x, mb.radius});
-  if (poly_a && poly_b) {
-    PolytopeShape a{&sha.hull, rot_[pc.a], sa.x, ma.scale, pc.hint_a};
-    PolytopeShape b{&shb.hull, rot_[pc.b], sb.x, mb.scale, pc.hint_b};
-    ContactResult r = collide_convex(a, b, pc.dir, pc.warm);
-    pc.hint_a = a.hint;
-    pc.hint_b = b.hint;
-    pc.warm = true;
-    return r;
-  }
-  if (poly_b) {  // sphere a, polytope b
-    PolytopeShape b{&shb.hull, rot_[pc.b], sb.x, mb.scale, pc.hint_b};
-    ContactResult r = collide_convex(SphereShape{sa.x, ma.radius}, b, pc.dir);
-    pc.hint_b = b.hint;
-    return r;
-  }
-  // polytope a, sphere b: collide (b, a) and flip the normal.
-  PolytopeShape a{&sha.hull, rot_[pc.a], sa.x, ma.scale, pc.hint_a};
-  Vec3 flipped = -pc.dir;
-  ContactResult r = collide_convex(SphereShape{sb.x, mb.radius}, a, flipped);
-  pc.dir = -flipped;
-  pc.hint_a = a.hint;
-  r.normal = -r.normal;
-  return r;
+PosedShape World::posed_body(Index i) const {
+  const BodyModel& m = model.bodies[i];
+  const Shape& sh = model.shapes[m.shape];
+  PosedShape p;
+  p.kind = sh.kind;
+  p.hull = &sh.hull;
+  p.compound = &sh.compound;
+  p.radius = m.radius;
+  p.rot = &rot_[i];
+  p.q = &state.bodies[i].q;
+  p.pos = state.bodies[i].x;
+  p.scale = m.scale;
+  return p;
 }
 
-ContactResult World::collide_wall(PairContact& pc) const {
-  const WallModel& wm = model.walls[pc.a];
-  const WallState& ws = state.walls[pc.a];
+PosedShape World::posed_wall(Index w) const {
+  const WallModel& wm = model.walls[w];
+  PosedShape p;
+  p.kind = wm.kind;
+  p.half = wm.half;
+  p.rot = &wall_rot_[w];
+  p.q = &state.walls[w].q;
+  p.pos = state.walls[w].x;
+  return p;
+}
+
+int World::collide_pair(CandidatePair& pc, SubContact* out) const {
+  const BodyModel& ma = model.bodies[pc.a];
   const BodyModel& mb = model.bodies[pc.b];
-  const BodyState& sb = state.bodies[pc.b];
-  const Shape& shb = model.shapes[mb.shape];
-  const bool poly = shb.kind == Shape::Kind::Polytope;
-  if (wm.kind == WallModel::Kind::Plane) {
-    const PlaneShape plane{ws.x, ws.q * Vec3::UnitZ()};
-    if (!poly) return collide(plane, SphereShape{sb.x, mb.radius});
-    PolytopeShape b{&shb.hull, rot_[pc.b], sb.x, mb.scale, pc.hint_b};
-    ContactResult r = collide(plane, b);
-    pc.hint_b = b.hint;
-    return r;
+  // Bounding spheres apart: no contact, no narrowphase.
+  const double reach = ma.bounding_radius + mb.bounding_radius;
+  if ((state.bodies[pc.b].x - state.bodies[pc.a].x).squaredNorm() > reach * reach) {
+    pc.cache.warm = false;  // the last normal will be stale when they meet
+    return 0;
   }
-  const BoxShape box{ws.q.toRotationMatrix(), ws.x, wm.half};
-  if (!poly) return collide_convex(box, SphereShape{sb.x, mb.radius}, pc.dir);
-  PolytopeShape b{&shb.hull, rot_[pc.b], sb.x, mb.scale, pc.hint_b};
-  ContactResult r = collide_convex(box, b, pc.dir, pc.warm);
-  pc.hint_b = b.hint;
-  pc.warm = true;
-  return r;
+  return collide_shapes(posed_body(pc.a), posed_body(pc.b), pc.cache, out);
+}
+
+int World::collide_wall(CandidatePair& pc, SubContact* out) const {
+  return collide_shapes(posed_wall(pc.a), posed_body(pc.b), pc.cache, out);
+}
+
+void World::collide_list(std::vector<CandidatePair>& pairs, bool walls, std::vector<Contact>& contacts) {
+  const std::size_t n = pairs.size();
+  // Each pair writes its results into its own fixed-capacity slot, in parallel.
+  if (sub_results_.size() < n * kMaxSubContacts) sub_results_.resize(n * kMaxSubContacts);
+  sub_counts_.resize(n);
+  parallel_for(
+      static_cast<std::ptrdiff_t>(n),
+      [&](std::ptrdiff_t k) {
+        SubContact* out = &sub_results_[static_cast<std::size_t>(k) * kMaxSubContacts];
+        sub_counts_[k] = walls ? collide_wall(pairs[k], out) : collide_pair(pairs[k], out);
+      },
+      32, settings.threads);
+  // Serial compaction in pair order (routines write sub-contacts in increasing
+  // id, so the list stays sorted by (a, b, sub)); springs carried from last
+  // step's contacts by a merge join on (a, b, sub).
+  next_contacts_.clear();
+  std::size_t j = 0;
+  for (std::size_t k = 0; k < n; ++k) {
+    const SubContact* res = &sub_results_[k * kMaxSubContacts];
+    for (int r = 0; r < sub_counts_[k]; ++r) {
+      if (!res[r].geo.touching) continue;
+      Contact c;
+      c.a = pairs[k].a;
+      c.b = pairs[k].b;
+      c.sub = res[r].sub;
+      c.geo = res[r].geo;
+      while (j < contacts.size() && contacts[j] < c) ++j;
+      if (j < contacts.size() && contacts[j].same_key(c)) c.xi = contacts[j].xi;
+      next_contacts_.push_back(c);
+    }
+  }
+  contacts.swap(next_contacts_);
 }
 
 void World::narrowphase() {
-  auto& pairs = state.pairs;
-  parallel_for(static_cast<std::ptrdiff_t>(pairs.size()),
-               [&](std::ptrdiff_t k) { pairs[k].geo = collide_pair(pairs[k]); }, 32);
-  auto& wp = state.wall_pairs;
-  parallel_for(static_cast<std::ptrdiff_t>(wp.size()),
-               [&](std::ptrdiff_t k) { wp[k].geo = collide_wall(wp[k]); }, 32);
-  profile.pair_tests += static_cast<std::int64_t>(pairs.size() + wp.size());
+  collide_list(state.pairs, false, state.contacts);
+  collide_list(state.wall_pairs, true, state.wall_contacts);
+  profile.pair_tests += static_cast<std::int64_t>(state.pairs.size() + state.wall_pairs.size());
 }
 
 namespace {
@@ -295,7 +297,7 @@ namespace {
 // Evaluates the contact law for one pair whose sides move with relative
 // velocity v_rel at the contact point and relative angular velocity w_rel.
 template <typename Law>
-void evaluate(PairContact& pc, const PairCoefficients& coeffs, const Vec3& v_rel, const Vec3& w_rel,
+void evaluate(Contact& pc, const PairCoefficients& coeffs, const Vec3& v_rel, const Vec3& w_rel,
               double m_eff, double r_eff, double dt) {
   const ContactKinematics c{pc.geo.normal, pc.geo.depth, v_rel, m_eff, r_eff};
   LawCoefficients law;
@@ -303,22 +305,13 @@ void evaluate(PairContact& pc, const PairCoefficients& coeffs, const Vec3& v_rel
   pc.torque = patch_damping_torque(law.c_n, pc.geo.spread, c.normal, w_rel);
 }
 
-// A pair that is not touching carries no force and forgets its spring.
-void release(PairContact& pc) {
-  pc.xi.setZero();
-  pc.force.setZero();
-  pc.torque.setZero();
-  pc.normal_force = 0;
-}
-
 }  // namespace
 
 template <typename Law>
 void World::forces_with(double dt) {
-  // Per pair, in parallel: the force on b at the contact point.
+  // Per contact (all touching), in parallel: the force on b at the contact point.
   const auto grain_pair = [&](std::ptrdiff_t k) {
-    PairContact& pc = state.pairs[k];
-    if (!pc.geo.touching) return release(pc);
+    Contact& pc = state.contacts[k];
     const BodyModel &ma = model.bodies[pc.a], &mb = model.bodies[pc.b];
     const BodyState &sa = state.bodies[pc.a], &sb = state.bodies[pc.b];
     const Vec3& p = pc.geo.point;
@@ -326,36 +319,33 @@ void World::forces_with(double dt) {
                   (sb.v + sb.w.cross(p - sb.x)) - (sa.v + sa.w.cross(p - sa.x)), sb.w - sa.w,
                   ma.mass * mb.mass / (ma.mass + mb.mass), ma.radius * mb.radius / (ma.radius + mb.radius), dt);
   };
-  parallel_for(static_cast<std::ptrdiff_t>(state.pairs.size()), grain_pair, 128);
+  parallel_for(static_cast<std::ptrdiff_t>(state.contacts.size()), grain_pair, 128, settings.threads);
 
   // Walls: infinite mass and radius, translating at their prescribed velocity.
   const auto wall_pair = [&](std::ptrdiff_t k) {
-    PairContact& pc = state.wall_pairs[k];
-    if (!pc.geo.touching) return release(pc);
+    Contact& pc = state.wall_contacts[k];
     const BodyModel& mb = model.bodies[pc.b];
     const BodyState& sb = state.bodies[pc.b];
     const Vec3& p = pc.geo.point;
     evaluate<Law>(pc, model.pair(model.walls[pc.a].material, mb.material),
                   (sb.v + sb.w.cross(p - sb.x)) - state.walls[pc.a].v, sb.w, mb.mass, mb.radius, dt);
   };
-  parallel_for(static_cast<std::ptrdiff_t>(state.wall_pairs.size()), wall_pair, 128);
+  parallel_for(static_cast<std::ptrdiff_t>(state.wall_contacts.size()), wall_pair, 128, settings.threads);
 
-  // Serial sums in pair order: independent of the thread count.
+  // Serial sums in contact order: independent of the thread count.
   const std::size_t n = state.bodies.size();
   for (std::size_t i = 0; i < n; ++i) {
     force_[i] = model.bodies[i].gravity_mass * model.gravity;
     torque_[i].setZero();
   }
   for (WallState& w : state.walls) w.force.setZero();
-  for (const PairContact& pc : state.pairs) {
-    if (!pc.geo.touching) continue;
+  for (const Contact& pc : state.contacts) {
     force_[pc.b] += pc.force;
     force_[pc.a] -= pc.force;
     torque_[pc.b] += (pc.geo.point - state.bodies[pc.b].x).cross(pc.force) + pc.torque;
     torque_[pc.a] -= (pc.geo.point - state.bodies[pc.a].x).cross(pc.force) + pc.torque;
   }
-  for (const PairContact& pc : state.wall_pairs) {
-    if (!pc.geo.touching) continue;
+  for (const Contact& pc : state.wall_contacts) {
     force_[pc.b] += pc.force;
     torque_[pc.b] += (pc.geo.point - state.bodies[pc.b].x).cross(pc.force) + pc.torque;
     state.walls[pc.a].force -= pc.force;
@@ -377,21 +367,18 @@ void World::integrate(double dt) {
     const BodyModel& m = model.bodies[i];
     s.v += (m.inv_mass * dt) * force_[i];
     s.x += dt * s.v;
-    const bool isotropic = model.shapes[m.shape].kind == Shape::Kind::Sphere;
+    const bool isotropic = model.shapes[m.shape].isotropic;
     integrate_rotation(s.q, s.w, torque_[i], m.inertia, m.inv_inertia, dt, isotropic);
     kinetic_[i] = kinetic_energy_of(m, s);
   };
-  parallel_for(static_cast<std::ptrdiff_t>(n), body, 256);
+  parallel_for(static_cast<std::ptrdiff_t>(n), body, 256, settings.threads);
   for (WallState& w : state.walls) w.x += dt * w.v;
 }
 
 void World::bookkeeping() {
   double ke = 0;
   for (double k : kinetic_) ke += k;
-  std::size_t touching = 0;
-  for (const PairContact& pc : state.pairs) touching += in_contact(pc);
-  for (const PairContact& pc : state.wall_pairs) touching += in_contact(pc);
-  profile.contacts += static_cast<std::int64_t>(touching);
+  profile.contacts += static_cast<std::int64_t>(contact_count());
   if (!std::isfinite(ke)) {
     for (std::size_t i = 0; i < state.bodies.size(); ++i) {
       if (!state.bodies[i].x.allFinite() || !state.bodies[i].v.allFinite())
@@ -412,9 +399,13 @@ double World::kinetic_energy() const {
 
 std::size_t World::contact_count() const {
   std::size_t n = 0;
-  for (const PairContact& pc : state.pairs) n += in_contact(pc);
-  for (const PairContact& pc : state.wall_pairs) n += in_contact(pc);
+  for (const Contact& c : state.contacts) n += in_contact(c);
+  for (const Contact& c : state.wall_contacts) n += in_contact(c);
   return n;
+}
+
+std::size_t World::touching_pair_count() const {
+  return grainlab::touching_pair_count(state.contacts) + grainlab::touching_pair_count(state.wall_contacts);
 }
 
 }  // namespace grainlab

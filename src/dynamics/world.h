@@ -9,9 +9,11 @@
 #pragma once
 
 #include "collision/broadphase.h"
+#include "collision/posed_shape.h"
 #include "dynamics/model.h"
 #include "dynamics/profile.h"
 #include "dynamics/state.h"
+#include "dynamics/world_settings.h"
 
 #include <functional>
 #include <vector>
@@ -28,14 +30,7 @@ class World {
   Model model;
   State state;
   StepProfile profile;
-  // Verlet skin (m): candidate pairs are kept while no grain has moved more
-  // than skin/2 since the last broadphase. 0 = automatic (0.2 x the smallest
-  // grain's volume-equivalent radius).
-  double skin = 0;
-  // Reference overlap for the critical time step, as a fraction of the
-  // smallest grain's equivalent radius (overlaps larger than this are not
-  // expected in a well-posed run).
-  double expected_overlap_fraction = 0.01;
+  WorldSettings settings;  // skin, critical-step overlap, threads
 
   World() = default;
   explicit World(Model m) : model(std::move(m)) {}
@@ -61,8 +56,11 @@ class World {
 
   // Sum of translational and rotational kinetic energy (J), inertial masses.
   double kinetic_energy() const;
-  // Number of touching grain-grain and wall-grain pairs after the last step.
+  // Number of touching grain-grain and wall-grain contacts (sub-contacts) after the last step.
   std::size_t contact_count() const;
+  // Number of touching grain-grain and wall-grain body pairs after the last
+  // step (a pair touching at several places counts once).
+  std::size_t touching_pair_count() const;
   // Resultant force and torque on each body in the last step (N, N m).
   const std::vector<Vec3>& body_forces() const { return force_; }
   const std::vector<Vec3>& body_torques() const { return torque_; }
@@ -78,8 +76,11 @@ class World {
   template <typename Law> void forces_with(double dt);
   void integrate(double dt);
   void bookkeeping();
-  ContactResult collide_pair(PairContact& pc) const;
-  ContactResult collide_wall(PairContact& pc) const;
+  int collide_pair(CandidatePair& pc, SubContact* out) const;
+  int collide_wall(CandidatePair& pc, SubContact* out) const;
+  void collide_list(std::vector<CandidatePair>& pairs, bool walls, std::vector<Contact>& contacts);
+  PosedShape posed_body(Index i) const;
+  PosedShape posed_wall(Index w) const;
 
   std::vector<Controller> controllers_;
   SweepAndPrune sap_;
@@ -87,9 +88,13 @@ class World {
   double checked_dt_ = -1;  // the step last checked against the critical step
   double max_move_sq_ = 0;
   std::vector<Mat3> rot_;
+  std::vector<Mat3> wall_rot_;  // wall rotations, as of the last broadphase
   std::vector<Aabb> aabb_;
   std::vector<BodyPair> candidates_;
-  std::vector<PairContact> scratch_;
+  std::vector<CandidatePair> scratch_;
+  std::vector<SubContact> sub_results_;  // narrowphase: kMaxSubContacts slots per pair
+  std::vector<int> sub_counts_;          // narrowphase: results written per pair
+  std::vector<Contact> next_contacts_;   // the contact list being compacted
   std::vector<Vec3> force_, torque_;
   std::vector<double> kinetic_;
 };

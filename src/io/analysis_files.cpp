@@ -69,7 +69,7 @@ nlohmann::json band_json(const BandAnalysis& b) {
 std::string force_chains_csv(const State& s) {
   Table t;
   t.columns = {"x1_m", "y1_m", "z1_m", "x2_m", "y2_m", "z2_m", "force_N", "tangential_force_N"};
-  for (const PairContact& pc : s.pairs) {
+  for (const Contact& pc : s.contacts) {
     if (!in_contact(pc)) continue;
     const Vec3& a = s.bodies[pc.a].x;
     const Vec3& b = s.bodies[pc.b].x;

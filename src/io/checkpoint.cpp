@@ -2,12 +2,13 @@
 // (doubles as their IEEE-754 bits), so files are exact and portable, and
 // struct padding never reaches the file. Payload order:
 //   config_hash u64, time f64, step i64, rebuild_pairs u8,
-//   counts u64: bodies, walls, pairs, wall_pairs, x_at_rebuild, protocol,
+//   counts u64: bodies, walls, pairs, wall_pairs, contacts, wall_contacts,
+//            x_at_rebuild, protocol,
 //   bodies   (x, v, w: 3 f64 each; q: x, y, z, w),
 //   walls    (x, q, v, force),
-//   pairs, wall_pairs (a, b i32; dir, xi; hint_a, hint_b i32; warm u8;
-//            geo: touching u8, depth, normal, point, spread; force, torque,
-//            normal_force),
+//   pairs, wall_pairs (a, b i32; cache: dir; hint_a, hint_b i32; warm u8),
+//   contacts, wall_contacts (a, b, sub i32; xi; geo: touching u8, depth,
+//            normal, point, spread; force, torque, normal_force),
 //   x_at_rebuild (3 f64 each), protocol bytes.
 #include "io/checkpoint.h"
 
@@ -27,7 +28,9 @@ namespace grainlab {
 
 // A new field in these structs must be written below (and the version bumped).
 static_assert(sizeof(ContactResult) == 72, "ContactResult changed: update io/checkpoint.cpp and kCheckpointVersion");
-static_assert(sizeof(PairContact) == 200, "PairContact changed: update io/checkpoint.cpp and kCheckpointVersion");
+static_assert(sizeof(PairCache) == 40, "PairCache changed: update io/checkpoint.cpp and kCheckpointVersion");
+static_assert(sizeof(CandidatePair) == 48, "CandidatePair changed: update io/checkpoint.cpp and kCheckpointVersion");
+static_assert(sizeof(Contact) == 168, "Contact changed: update io/checkpoint.cpp and kCheckpointVersion");
 
 namespace {
 
@@ -118,11 +121,25 @@ class Reader {
   const std::string& source_;
 };
 
-void write_pair(Writer& w, const PairContact& p) {
+void write_pair(Writer& w, const CandidatePair& p) {
   w.i32(p.a), w.i32(p.b);
-  w.vec(p.dir), w.vec(p.xi);
-  w.i32(p.hint_a), w.i32(p.hint_b);
-  w.u8(p.warm ? 1 : 0);
+  w.vec(p.cache.dir);
+  w.i32(p.cache.hint_a), w.i32(p.cache.hint_b);
+  w.u8(p.cache.warm ? 1 : 0);
+}
+
+CandidatePair read_pair(Reader& r) {
+  CandidatePair p;
+  p.a = r.i32(), p.b = r.i32();
+  p.cache.dir = r.vec();
+  p.cache.hint_a = r.i32(), p.cache.hint_b = r.i32();
+  p.cache.warm = r.flag();
+  return p;
+}
+
+void write_contact(Writer& w, const Contact& p) {
+  w.i32(p.a), w.i32(p.b), w.i32(p.sub);
+  w.vec(p.xi);
   w.u8(p.geo.touching ? 1 : 0);
   w.f64(p.geo.depth);
   w.vec(p.geo.normal), w.vec(p.geo.point);
@@ -131,12 +148,10 @@ void write_pair(Writer& w, const PairContact& p) {
   w.f64(p.normal_force);
 }
 
-PairContact read_pair(Reader& r) {
-  PairContact p;
-  p.a = r.i32(), p.b = r.i32();
-  p.dir = r.vec(), p.xi = r.vec();
-  p.hint_a = r.i32(), p.hint_b = r.i32();
-  p.warm = r.flag();
+Contact read_contact(Reader& r) {
+  Contact p;
+  p.a = r.i32(), p.b = r.i32(), p.sub = r.i32();
+  p.xi = r.vec();
   p.geo.touching = r.flag();
   p.geo.depth = r.f64();
   p.geo.normal = r.vec(), p.geo.point = r.vec();
@@ -148,7 +163,8 @@ PairContact read_pair(Reader& r) {
 
 constexpr std::size_t kBodyBytes = 13 * 8;
 constexpr std::size_t kWallBytes = 13 * 8;
-constexpr std::size_t kPairBytes = 4 * 4 + 2 + 21 * 8;
+constexpr std::size_t kPairBytes = 4 * 4 + 1 + 3 * 8;
+constexpr std::size_t kContactBytes = 3 * 4 + 1 + 18 * 8;
 
 }  // namespace
 
@@ -174,11 +190,14 @@ std::vector<std::uint8_t> encode_checkpoint(const State& state, std::span<const 
   p.i64(state.step);
   p.u8(state.rebuild_pairs ? 1 : 0);
   p.u64(state.bodies.size()), p.u64(state.walls.size()), p.u64(state.pairs.size());
-  p.u64(state.wall_pairs.size()), p.u64(state.x_at_rebuild.size()), p.u64(protocol.size());
+  p.u64(state.wall_pairs.size()), p.u64(state.contacts.size()), p.u64(state.wall_contacts.size());
+  p.u64(state.x_at_rebuild.size()), p.u64(protocol.size());
   for (const BodyState& b : state.bodies) p.vec(b.x), p.vec(b.v), p.vec(b.w), p.quat(b.q);
   for (const WallState& w : state.walls) p.vec(w.x), p.quat(w.q), p.vec(w.v), p.vec(w.force);
-  for (const PairContact& c : state.pairs) write_pair(p, c);
-  for (const PairContact& c : state.wall_pairs) write_pair(p, c);
+  for (const CandidatePair& c : state.pairs) write_pair(p, c);
+  for (const CandidatePair& c : state.wall_pairs) write_pair(p, c);
+  for (const Contact& c : state.contacts) write_contact(p, c);
+  for (const Contact& c : state.wall_contacts) write_contact(p, c);
   for (const Vec3& x : state.x_at_rebuild) p.vec(x);
   p.bytes.insert(p.bytes.end(), protocol.begin(), protocol.end());
 
@@ -225,6 +244,7 @@ Checkpoint decode_checkpoint(std::span<const std::uint8_t> bytes, const std::str
   s.rebuild_pairs = r.flag();
   const std::size_t n_bodies = r.count(kBodyBytes), n_walls = r.count(kWallBytes);
   const std::size_t n_pairs = r.count(kPairBytes), n_wall_pairs = r.count(kPairBytes);
+  const std::size_t n_contacts = r.count(kContactBytes), n_wall_contacts = r.count(kContactBytes);
   const std::size_t n_rebuild = r.count(24), n_protocol = r.count(1);
   s.bodies.resize(n_bodies);
   for (BodyState& b : s.bodies) b.x = r.vec(), b.v = r.vec(), b.w = r.vec(), b.q = r.quat();
@@ -234,6 +254,10 @@ Checkpoint decode_checkpoint(std::span<const std::uint8_t> bytes, const std::str
   for (std::size_t i = 0; i < n_pairs; ++i) s.pairs.push_back(read_pair(r));
   s.wall_pairs.reserve(n_wall_pairs);
   for (std::size_t i = 0; i < n_wall_pairs; ++i) s.wall_pairs.push_back(read_pair(r));
+  s.contacts.reserve(n_contacts);
+  for (std::size_t i = 0; i < n_contacts; ++i) s.contacts.push_back(read_contact(r));
+  s.wall_contacts.reserve(n_wall_contacts);
+  for (std::size_t i = 0; i < n_wall_contacts; ++i) s.wall_contacts.push_back(read_contact(r));
   s.x_at_rebuild.resize(n_rebuild);
   for (Vec3& x : s.x_at_rebuild) x = r.vec();
   c.protocol.resize(n_protocol);

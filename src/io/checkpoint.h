@@ -29,7 +29,8 @@ struct Checkpoint {
 };
 
 // Current checkpoint format version; files of another version are refused.
-inline constexpr std::uint32_t kCheckpointVersion = 1;
+// 2: candidate pairs (warm-start caches) and contacts (a, b, sub-contact) stored apart.
+inline constexpr std::uint32_t kCheckpointVersion = 2;
 
 // Writes a checkpoint atomically (RunError on failure).
 void save_checkpoint(const std::filesystem::path& path, const State& state, std::span<const std::uint8_t> protocol,

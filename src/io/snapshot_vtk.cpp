@@ -80,11 +80,10 @@ double snapshot_rotation_angle(const Quat& now, const Quat& ref) {
 
 std::vector<std::int32_t> grain_contact_counts(const State& state) {
   std::vector<std::int32_t> n(state.bodies.size(), 0);
-  for (const PairContact& pc : state.pairs) {
-    if (!in_contact(pc)) continue;
-    ++n[pc.a];
-    ++n[pc.b];
-  }
+  for_each_touching_pair(state.contacts, [&n](Index a, Index b) {
+    ++n[a];
+    ++n[b];
+  });
   return n;
 }
 
@@ -189,15 +188,16 @@ PolyData grains_polydata(const Model& model, const State& state, const GrainFiel
 PolyData contacts_polydata(const State& state) {
   PolyData pd;
   std::vector<double> points;
-  std::vector<std::int32_t> grain_a, grain_b;
+  std::vector<std::int32_t> grain_a, grain_b, sub;
   std::vector<double> magnitude, normal_force, tangential, normal, force;
-  for (const PairContact& pc : state.pairs) {
+  for (const Contact& pc : state.contacts) {
     if (!in_contact(pc)) continue;
     const Index base = static_cast<Index>(points.size() / 3);
     for (const Vec3& x : {state.bodies[pc.a].x, state.bodies[pc.b].x}) points.insert(points.end(), x.data(), x.data() + 3);
     pd.lines.add({base, base + 1});
     grain_a.push_back(pc.a);
     grain_b.push_back(pc.b);
+    sub.push_back(pc.sub);
     const Vec3& n = pc.geo.normal;
     magnitude.push_back(pc.force.norm());
     normal_force.push_back(pc.normal_force);
@@ -209,6 +209,7 @@ PolyData contacts_polydata(const State& state) {
   pd.points.values = std::move(points);
   pd.cell_data.push_back({"grain_a", 1, std::move(grain_a)});
   pd.cell_data.push_back({"grain_b", 1, std::move(grain_b)});
+  pd.cell_data.push_back({"sub_contact", 1, std::move(sub)});
   pd.cell_data.push_back({"force_magnitude", 1, std::move(magnitude)});
   pd.cell_data.push_back({"normal_force", 1, std::move(normal_force)});
   pd.cell_data.push_back({"tangential_force", 1, std::move(tangential)});

@@ -7,8 +7,10 @@
 //                      (m/s), coordination number, and any extra per-grain
 //                      arrays the caller supplies.
 //   contacts_NNNN.vtp  a line between the two grain centres per grain-grain
-//                      contact (in_contact(), as World::contact_count counts);
-//                      cell data: the two grain ids, force magnitude, normal
+//                      contact (in_contact(), as World::contact_count counts;
+//                      a pair touching at several places has one line each);
+//                      cell data: the two grain ids, the sub-contact id within
+//                      the pair (0 for convex grains), force magnitude, normal
 //                      force, tangential force magnitude (N), unit normal
 //                      (from the first grain to the second), force on the
 //                      second grain (N, vector).
@@ -47,7 +49,7 @@ struct GrainFields {
 // A local helper: swap for the analysis layer's rotation measure when it exists.
 double snapshot_rotation_angle(const Quat& now, const Quat& ref);
 
-// Number of grain-grain contacts (in_contact pairs) of each grain.
+// Number of touching grain-grain pairs of each grain (a pair touching at several places counts once).
 std::vector<std::int32_t> grain_contact_counts(const State& state);
 
 // The default per-grain values: velocity and coordination always; displacement

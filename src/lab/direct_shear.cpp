@@ -199,7 +199,7 @@ void DirectShearTest::servo(World& w, double dt) {
   WallState& cap = w.state.walls[wall(Cap)];
   double k_cap = 0;
   const double tangent = w.model.law == ContactLaw::Hooke ? 1.0 : 1.5;
-  for (const PairContact& pc : w.state.wall_pairs)
+  for (const Contact& pc : w.state.wall_contacts)
     if (pc.a == wall(Cap) && in_contact(pc) && pc.geo.depth > 0) k_cap += tangent * pc.normal_force / pc.geo.depth;
   if (k_cap <= 0) {
     cap.v.z() = -cap_speed_limit_;  // not touching yet: come down
@@ -222,8 +222,8 @@ bool DirectShearTest::at_rest(bool strict) const {
   // Kinetic energy small against the elastic energy stored in the contacts
   // (Hertz: (2/5) f delta per contact).
   double elastic = 0;
-  for (const auto* list : {&world_.state.pairs, &world_.state.wall_pairs})
-    for (const PairContact& pc : *list)
+  for (const auto* list : {&world_.state.contacts, &world_.state.wall_contacts})
+    for (const Contact& pc : *list)
       if (in_contact(pc)) elastic += 0.4 * pc.normal_force * pc.geo.depth;
   return world_.kinetic_energy() < 1e-2 * elastic;
 }
@@ -333,8 +333,7 @@ double DirectShearTest::achieved_relative_density() const {
 }
 
 double DirectShearTest::coordination_number() const {
-  std::size_t contacts = 0;
-  for (const PairContact& pc : world_.state.pairs) contacts += in_contact(pc);
+  const std::size_t contacts = touching_pair_count(world_.state.contacts);
   return 2.0 * contacts / std::max<std::size_t>(1, world_.model.bodies.size());
 }
 
@@ -355,8 +354,8 @@ double DirectShearTest::averaged_unbalanced_force_ratio() const {
 double DirectShearTest::per_mean_contact_force(double force) const {
   double contact = 0;
   std::size_t n_contacts = 0;
-  for (const auto* list : {&world_.state.pairs, &world_.state.wall_pairs})
-    for (const PairContact& pc : *list)
+  for (const auto* list : {&world_.state.contacts, &world_.state.wall_contacts})
+    for (const Contact& pc : *list)
       if (in_contact(pc)) contact += pc.force.norm(), ++n_contacts;
   if (n_contacts == 0 || contact <= 0) return 1;
   return force / (contact / n_contacts);

@@ -62,12 +62,12 @@ bool all_grains_inside(const SettlingBed& bed) {
 
 double max_relative_overlap(const World& world) {
   double worst = 0;
-  for (const PairContact& pc : world.state.pairs) {
+  for (const Contact& pc : world.state.contacts) {
     if (!pc.geo.touching) continue;
     const double r = std::min(world.model.bodies[pc.a].radius, world.model.bodies[pc.b].radius);
     worst = std::max(worst, pc.geo.depth / r);
   }
-  for (const PairContact& pc : world.state.wall_pairs) {
+  for (const Contact& pc : world.state.wall_contacts) {
     if (pc.geo.touching) worst = std::max(worst, pc.geo.depth / world.model.bodies[pc.b].radius);
   }
   return worst;

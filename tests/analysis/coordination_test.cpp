@@ -10,8 +10,8 @@ using namespace grainlab::analysis;
 
 namespace {
 
-PairContact pair(Index a, Index b, bool touching) {
-  PairContact pc;
+Contact pair(Index a, Index b, bool touching) {
+  Contact pc;
   pc.a = a;
   pc.b = b;
   pc.geo.touching = touching;
@@ -23,8 +23,8 @@ PairContact pair(Index a, Index b, bool touching) {
 State chain() {
   State s;
   s.bodies.resize(5);
-  s.pairs = {pair(0, 1, true), pair(1, 2, true), pair(2, 3, true), pair(3, 4, false)};
-  s.wall_pairs = {pair(0, 0, true), pair(1, 4, false)};
+  s.contacts = {pair(0, 1, true), pair(1, 2, true), pair(2, 3, true), pair(3, 4, false)};
+  s.wall_contacts = {pair(0, 0, true), pair(1, 4, false)};
   return s;
 }
 

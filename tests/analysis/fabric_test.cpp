@@ -175,14 +175,14 @@ TEST(Fabric, ContactNormalsOfASubsetCountOncePerSubsetGrain) {
   State s;
   s.bodies.resize(4);
   const auto pair = [](Index a, Index b, bool touching, Vec3 n) {
-    PairContact pc;
+    Contact pc;
     pc.a = a;
     pc.b = b;
     pc.geo.touching = touching;
     pc.geo.normal = n;
     return pc;
   };
-  s.pairs = {pair(0, 1, true, Vec3::UnitX()), pair(1, 2, true, Vec3::UnitY()), pair(2, 3, false, Vec3::UnitZ())};
+  s.contacts = {pair(0, 1, true, Vec3::UnitX()), pair(1, 2, true, Vec3::UnitY()), pair(2, 3, false, Vec3::UnitZ())};
   EXPECT_EQ(contact_normals(s).size(), 2u);
   const GrainMask m = {0, 1, 1, 0};  // grains 1, 2: contact 0-1 once, 1-2 twice
   const std::vector<Vec3> n = contact_normals(s, &m);

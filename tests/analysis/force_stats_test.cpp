@@ -10,8 +10,8 @@ using namespace grainlab::analysis;
 
 namespace {
 
-PairContact pair(Index a, Index b, bool touching, double f_n) {
-  PairContact pc;
+Contact pair(Index a, Index b, bool touching, double f_n) {
+  Contact pc;
   pc.a = a;
   pc.b = b;
   pc.geo.touching = touching;
@@ -26,9 +26,9 @@ TEST(ForceStats, MeanMaxSpreadAndStrongContacts) {
   s.bodies.resize(6);
   // Four contacts of 1, 2, 3 and 6 N; a pair no longer touching still holds a
   // stale 100 N, and a wall contact 50 N: neither counts.
-  s.pairs = {pair(0, 1, true, 1), pair(0, 2, false, 100), pair(1, 2, true, 2), pair(2, 3, true, 6),
+  s.contacts = {pair(0, 1, true, 1), pair(0, 2, false, 100), pair(1, 2, true, 2), pair(2, 3, true, 6),
              pair(3, 4, true, 3)};
-  s.wall_pairs = {pair(0, 5, true, 50)};
+  s.wall_contacts = {pair(0, 5, true, 50)};
   const ForceStats st = force_stats(s);
   EXPECT_EQ(st.contacts, 4u);
   EXPECT_DOUBLE_EQ(st.mean, 3.0);
@@ -43,7 +43,7 @@ TEST(ForceStats, MeanMaxSpreadAndStrongContacts) {
 TEST(ForceStats, NoContactsGiveZeros) {
   State s;
   s.bodies.resize(2);
-  s.pairs = {pair(0, 1, false, 5)};
+  s.contacts = {pair(0, 1, false, 5)};
   const ForceStats st = force_stats(s);
   EXPECT_EQ(st.contacts, 0u);
   EXPECT_EQ(st.mean, 0.0);

@@ -16,8 +16,8 @@ using namespace grainlab::analysis;
 
 namespace {
 
-PairContact contact(Index a, Index b, const Vec3& force_on_b, const Vec3& point) {
-  PairContact pc;
+Contact contact(Index a, Index b, const Vec3& force_on_b, const Vec3& point) {
+  Contact pc;
   pc.a = a;
   pc.b = b;
   pc.geo.touching = true;
@@ -36,8 +36,8 @@ TEST(Stress, CompressionIsPositive) {
   s.bodies.resize(2);
   s.bodies[0].x = Vec3(0, 0, r);
   s.bodies[1].x = Vec3(0, 0, 3 * r);
-  s.pairs = {contact(0, 1, Vec3(0, 0, F), Vec3(0, 0, 2 * r))};
-  s.wall_pairs = {contact(0, 0, Vec3(0, 0, F), Vec3::Zero())};
+  s.contacts = {contact(0, 1, Vec3(0, 0, F), Vec3(0, 0, 2 * r))};
+  s.wall_contacts = {contact(0, 0, Vec3(0, 0, F), Vec3::Zero())};
   StressTensor st = love_weber_stress(s, V);
   // Grain-grain: F x 2r; wall: the grain's half, F x r.
   EXPECT_NEAR(st.sigma(2, 2), F * 3 * r / V, 1e-9);
@@ -47,11 +47,11 @@ TEST(Stress, CompressionIsPositive) {
   EXPECT_NEAR(st.deviatoric, F * 3 * r / V, 1e-9);  // uniaxial: q = |sigma_zz|
   EXPECT_NEAR(love_weber_stress(s, V, false).sigma(2, 2), F * 2 * r / V, 1e-9);
   // Pulled together instead: tension is negative.
-  s.pairs[0].force = Vec3(0, 0, -F);
+  s.contacts[0].force = Vec3(0, 0, -F);
   EXPECT_NEAR(love_weber_stress(s, V, false).sigma(2, 2), -F * 2 * r / V, 1e-9);
   // A tangential force along x on a vertical branch: raw has only xz, so the
   // symmetric part splits it and the asymmetry is |A| / |raw| = 1/sqrt2.
-  s.pairs[0].force = Vec3(F, 0, 0);
+  s.contacts[0].force = Vec3(F, 0, 0);
   st = love_weber_stress(s, V, false);
   EXPECT_NEAR(st.raw(0, 2), F * 2 * r / V, 1e-9);
   EXPECT_EQ(st.raw(2, 0), 0.0);

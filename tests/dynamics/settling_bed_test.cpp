@@ -1,6 +1,5 @@
 // A bed of convex grains settles to rest in a box; the result does not depend
 // on the thread count.
-#include "core/parallel.h"
 #include "lab/settling_bed.h"
 #include "state_compare.h"
 
@@ -53,16 +52,30 @@ TEST(SettlingBed, ConvexGrainsComeToRestInsideTheBox) {
   EXPECT_NEAR(carried / weight, 1.0, 1e-3);
 }
 
-TEST(SettlingBed, OneAndTwoThreadsGiveIdenticalStates) {
-  const auto run = [](int threads) {
-    set_thread_count(threads);
-    SettlingBed bed = make_settling_bed(test_bed());
+// Large enough for every parallel branch of the step: more than 256 grains
+// (compute_bounds' parallel reduction, the integrator's chunks of 256) and
+// hundreds of candidate and touching pairs (narrowphase chunks of 32, force
+// chunks of 128). Each World has its own thread count; none leaks to the next.
+TEST(SettlingBed, OneTwoAndThreeThreadsGiveIdenticalStates) {
+  SettlingBedSpec spec = test_bed();
+  spec.grains = 320;
+  spec.hull_points = 38;  // 72-face hulls: the test is about threads, not shapes
+  const auto run = [&](int threads) {
+    SettlingBed bed = make_settling_bed(spec);
+    bed.world.settings.threads = threads;
+    bed.world.model.gravity *= 20;  // the lattice lands and piles up in few steps
     const double dt = 0.2 * bed.world.critical_time_step();
-    for (int i = 0; i < 800; ++i) bed.world.step(dt);
-    return bed.world.state;
+    const int steps = static_cast<int>(0.03 / dt);
+    for (int i = 0; i < steps; ++i) bed.world.step(dt);
+    return bed.world;
   };
-  const State one = run(1);
-  const State two = run(2);
-  set_thread_count(2);
-  EXPECT_TRUE(testing_support::same_state_bits(one, two)) << "1 and 2 threads differ";
+  const World one = run(1);
+  EXPECT_GT(one.model.bodies.size(), 256u);
+  EXPECT_GT(one.state.pairs.size(), 256u) << "too few candidate pairs for the parallel narrowphase";
+  EXPECT_GT(one.contact_count(), 256u) << "too few touching pairs for the parallel force loop";
+  for (int threads : {2, 3}) {
+    const World many = run(threads);
+    EXPECT_EQ(many.settings.threads, threads);
+    EXPECT_TRUE(testing_support::same_state_bits(one.state, many.state)) << "1 and " << threads << " threads differ";
+  }
 }

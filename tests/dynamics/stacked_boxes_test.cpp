@@ -57,18 +57,18 @@ TEST(StackedBoxes, SettleWithContactPointAtOverlapCentroid) {
   EXPECT_LT(w.kinetic_energy(), 1e-6 * peak);
 
   // At rest: the box-box contact point holds still, at the footprint centroid.
-  ASSERT_EQ(w.state.pairs.size(), 1u);
+  ASSERT_EQ(w.state.contacts.size(), 1u);
   double jump = 0;
-  Vec3 last = w.state.pairs[0].geo.point;
+  Vec3 last = w.state.contacts[0].geo.point;
   for (int i = 0; i < 200; ++i) {
     w.step(dt);
-    ASSERT_TRUE(w.state.pairs[0].geo.touching);
-    jump = std::max(jump, (w.state.pairs[0].geo.point - last).norm());
-    last = w.state.pairs[0].geo.point;
+    ASSERT_TRUE(w.state.contacts[0].geo.touching);
+    jump = std::max(jump, (w.state.contacts[0].geo.point - last).norm());
+    last = w.state.contacts[0].geo.point;
   }
   EXPECT_LT(jump, 1e-6);
   const Vec3 top = w.state.bodies[1].x;
   EXPECT_NEAR(last.x(), top.x(), 0.03 * 2 * ht.y());
   EXPECT_NEAR(last.y(), top.y(), 0.03 * 2 * ht.y());
-  EXPECT_GT(w.state.pairs[0].geo.spread, 1e-7);
+  EXPECT_GT(w.state.contacts[0].geo.spread, 1e-7);
 }

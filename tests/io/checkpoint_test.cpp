@@ -27,9 +27,15 @@ class RandomFill {
   bool b() { return bits_(rng_) & 1; }
   std::size_t n(std::size_t max) { return bits_(rng_) % (max + 1); }
 
-  PairContact pair() {
-    PairContact p;
-    p.a = i(), p.b = i(), p.dir = v(), p.xi = v(), p.hint_a = i(), p.hint_b = i(), p.warm = b();
+  CandidatePair pair() {
+    CandidatePair p;
+    p.a = i(), p.b = i(), p.cache.dir = v(), p.cache.hint_a = i(), p.cache.hint_b = i(), p.cache.warm = b();
+    return p;
+  }
+
+  Contact contact() {
+    Contact p;
+    p.a = i(), p.b = i(), p.sub = i(), p.xi = v();
     p.geo.touching = b(), p.geo.depth = d(), p.geo.normal = v(), p.geo.point = v(), p.geo.spread = d();
     p.force = v(), p.torque = v(), p.normal_force = d();
     return p;
@@ -45,9 +51,13 @@ class RandomFill {
     s.walls.resize(n(6) + 1);
     for (WallState& w : s.walls) w.x = v(), w.q = q(), w.v = v(), w.force = v();
     s.pairs.resize(n(80) + 1);
-    for (PairContact& p : s.pairs) p = pair();
+    for (CandidatePair& p : s.pairs) p = pair();
     s.wall_pairs.resize(n(30) + 1);
-    for (PairContact& p : s.wall_pairs) p = pair();
+    for (CandidatePair& p : s.wall_pairs) p = pair();
+    s.contacts.resize(n(80) + 1);
+    for (Contact& p : s.contacts) p = contact();
+    s.wall_contacts.resize(n(30) + 1);
+    for (Contact& p : s.wall_contacts) p = contact();
     s.x_at_rebuild.resize(s.bodies.size());
     for (Vec3& x : s.x_at_rebuild) x = v();
     return s;
@@ -66,14 +76,19 @@ void expect_same(const Vec3& a, const Vec3& b) {
 void expect_same(const Quat& a, const Quat& b) {
   for (int k = 0; k < 4; ++k) EXPECT_EQ(bits(a.coeffs()[k]), bits(b.coeffs()[k]));
 }
-void expect_same(const PairContact& a, const PairContact& b) {
+void expect_same(const CandidatePair& a, const CandidatePair& b) {
   EXPECT_EQ(a.a, b.a);
   EXPECT_EQ(a.b, b.b);
-  expect_same(a.dir, b.dir);
+  expect_same(a.cache.dir, b.cache.dir);
+  EXPECT_EQ(a.cache.hint_a, b.cache.hint_a);
+  EXPECT_EQ(a.cache.hint_b, b.cache.hint_b);
+  EXPECT_EQ(a.cache.warm, b.cache.warm);
+}
+void expect_same(const Contact& a, const Contact& b) {
+  EXPECT_EQ(a.a, b.a);
+  EXPECT_EQ(a.b, b.b);
+  EXPECT_EQ(a.sub, b.sub);
   expect_same(a.xi, b.xi);
-  EXPECT_EQ(a.hint_a, b.hint_a);
-  EXPECT_EQ(a.hint_b, b.hint_b);
-  EXPECT_EQ(a.warm, b.warm);
   EXPECT_EQ(a.geo.touching, b.geo.touching);
   EXPECT_EQ(bits(a.geo.depth), bits(b.geo.depth));
   expect_same(a.geo.normal, b.geo.normal);
@@ -105,6 +120,10 @@ void expect_same(const State& a, const State& b) {
   for (std::size_t i = 0; i < a.pairs.size(); ++i) expect_same(a.pairs[i], b.pairs[i]);
   ASSERT_EQ(a.wall_pairs.size(), b.wall_pairs.size());
   for (std::size_t i = 0; i < a.wall_pairs.size(); ++i) expect_same(a.wall_pairs[i], b.wall_pairs[i]);
+  ASSERT_EQ(a.contacts.size(), b.contacts.size());
+  for (std::size_t i = 0; i < a.contacts.size(); ++i) expect_same(a.contacts[i], b.contacts[i]);
+  ASSERT_EQ(a.wall_contacts.size(), b.wall_contacts.size());
+  for (std::size_t i = 0; i < a.wall_contacts.size(); ++i) expect_same(a.wall_contacts[i], b.wall_contacts[i]);
   ASSERT_EQ(a.x_at_rebuild.size(), b.x_at_rebuild.size());
   for (std::size_t i = 0; i < a.x_at_rebuild.size(); ++i) expect_same(a.x_at_rebuild[i], b.x_at_rebuild[i]);
 }

@@ -63,9 +63,9 @@ std::uint64_t physics_hash(const State& s) {
   }
   for (const WallState& w : s.walls) h.vec(w.x), h.vec(w.v), h.vec(w.force);
   std::vector<std::tuple<int, Index, Index, Vec3>> springs;
-  for (const PairContact& pc : s.pairs)
+  for (const Contact& pc : s.contacts)
     if (in_contact(pc)) springs.emplace_back(0, pc.a, pc.b, pc.xi);
-  for (const PairContact& pc : s.wall_pairs)
+  for (const Contact& pc : s.wall_contacts)
     if (in_contact(pc)) springs.emplace_back(1, pc.a, pc.b, pc.xi);
   std::sort(springs.begin(), springs.end(), [](const auto& l, const auto& r) {
     return std::tie(std::get<0>(l), std::get<1>(l), std::get<2>(l)) <

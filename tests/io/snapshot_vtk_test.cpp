@@ -85,7 +85,7 @@ TEST(SnapshotVtk, TinyWorldSnapshotsRoundTrip) {
 
   // The world has what the test needs: two grain-grain contacts, and both spheres on the floor.
   std::set<std::pair<Index, Index>> touching;
-  for (const PairContact& pc : w.state.pairs)
+  for (const Contact& pc : w.state.contacts)
     if (in_contact(pc)) touching.insert({pc.a, pc.b});
   ASSERT_EQ(touching, (std::set<std::pair<Index, Index>>{{0, 1}, {0, 2}}));
   ASSERT_EQ(w.contact_count(), 4u);
@@ -161,7 +161,7 @@ TEST(SnapshotVtk, TinyWorldSnapshotsRoundTrip) {
   const auto& force = values<double>(contacts.cell_data, "force");
   ASSERT_EQ(force.size(), 3 * touching.size());
   std::size_t c = 0;
-  for (const PairContact& pc : w.state.pairs) {
+  for (const Contact& pc : w.state.contacts) {
     if (!in_contact(pc)) continue;
     EXPECT_EQ(ga[c], pc.a);
     EXPECT_EQ(gb[c], pc.b);

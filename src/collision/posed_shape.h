@@ -1,0 +1,49 @@
+// What the shape-pair table (dispatch.h) works on: a shape of any kind placed
+// in the world, the per-pair warm-start cache, and the contacts a routine
+// writes. World builds these from its Model and State without looking at the
+// kind; the routine registered for the pair of kinds reads the fields its
+// kinds use.
+#pragma once
+
+#include "collision/compound.h"
+#include "collision/contact_result.h"
+#include "collision/shape_kind.h"
+#include "collision/shapes.h"
+#include "core/types.h"
+
+#include <cstdint>
+
+namespace grainlab {
+
+// A shape in the world: p_world = pos + rot * (scale * p_local).
+struct PosedShape {
+  ShapeKind kind = ShapeKind::Sphere;
+  const ConvexPolytope* hull = nullptr;  // Polytope: the hull in the local frame
+  const CompoundShape* compound = nullptr;  // Compound: its pieces
+  double radius = 0;                     // Sphere: radius in the world (m)
+  Vec3 half = Vec3::Zero();              // Box: half extents (m)
+  const Mat3* rot = nullptr;             // local-to-world rotation (Polytope, Box)
+  const Quat* q = nullptr;               // the same rotation as a quaternion (Plane: normal = q * z)
+  Vec3 pos = Vec3::Zero();               // centre of mass / wall point (m)
+  double scale = 1;                      // Polytope: uniform scale
+};
+
+// Warm-start data of one candidate pair, kept from step to step while the
+// broadphase keeps the pair (its routines read and update it).
+struct PairCache {
+  Vec3 dir = Vec3::UnitX();      // GJK search direction: last normal, a to b
+  Index hint_a = 0, hint_b = 0;  // support-vertex hints of the two shapes
+  bool warm = false;             // dir and hints come from a previous step
+};
+
+// A sub-contact of a pair: its geometry and its id within the pair (0 for a
+// pair of convex shapes, which touch at one place at most).
+struct SubContact {
+  ContactResult geo;
+  std::int32_t sub = 0;
+};
+
+// Most sub-contacts one pair routine may write.
+inline constexpr int kMaxSubContacts = 8;
+
+}  // namespace grainlab
