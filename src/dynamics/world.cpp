@@ -10,10 +10,12 @@
 #include "core/parallel.h"
 #include "core/timer.h"
 #include "dynamics/contact_law.h"
+#include "dynamics/laws/registry.h"
 #include "dynamics/integrator.h"
 #include "dynamics/time_step.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace grainlab {
@@ -363,11 +365,12 @@ void World::forces_with(double dt) {
 }
 
 void World::forces(double dt) {
-  switch (model.law) {
-    case ContactLaw::Hooke: forces_with<HookeLaw>(dt); break;
-    case ContactLaw::HertzUser: forces_with<HertzUserLaw>(dt); break;
-    case ContactLaw::HertzMaterial: forces_with<HertzMaterialLaw>(dt); break;
-  }
+  // One force loop per registered law, in registry order: the law is chosen
+  // once per step, and its coefficients are inlined into the loop.
+  static constexpr auto kernels = []<typename... Laws>(LawList<Laws...>) {
+    return std::array{&World::forces_with<Laws>...};
+  }(RegisteredLaws{});
+  (this->*kernels[model.law.index()])(dt);
 }
 
 void World::integrate(double dt) {

@@ -198,9 +198,9 @@ void DirectShearTest::servo(World& w, double dt) {
   if (p == ShearPhase::Deposit || p == ShearPhase::Done) return;
   WallState& cap = w.state.walls[wall(Cap)];
   double k_cap = 0;
-  const double tangent = w.model.law == ContactLaw::Hooke ? 1.0 : 1.5;
   for (const PairContact& pc : w.state.wall_pairs)
-    if (pc.a == wall(Cap) && in_contact(pc) && pc.geo.depth > 0) k_cap += tangent * pc.normal_force / pc.geo.depth;
+    if (pc.a == wall(Cap) && in_contact(pc) && pc.geo.depth > 0)
+      k_cap += w.model.law->tangent_stiffness(pc.normal_force, pc.geo.depth);
   if (k_cap <= 0) {
     cap.v.z() = -cap_speed_limit_;  // not touching yet: come down
     progress_.servo_integral = 0;
@@ -220,11 +220,11 @@ bool DirectShearTest::at_rest(bool strict) const {
   if (std::abs(normal_stress() / sigma - 1) > tolerance) return false;
   if (strict && averaged_unbalanced_force_ratio() > spec_.consolidation.max_unbalanced) return false;
   // Kinetic energy small against the elastic energy stored in the contacts
-  // (Hertz: (2/5) f delta per contact).
+  // (the law's, e.g. Hertz: (2/5) f delta per contact).
   double elastic = 0;
   for (const auto* list : {&world_.state.pairs, &world_.state.wall_pairs})
     for (const PairContact& pc : *list)
-      if (in_contact(pc)) elastic += 0.4 * pc.normal_force * pc.geo.depth;
+      if (in_contact(pc)) elastic += world_.model.law->elastic_energy(pc.normal_force, pc.geo.depth);
   return world_.kinetic_energy() < 1e-2 * elastic;
 }
 
