@@ -15,7 +15,6 @@
 #include "dynamics/time_step.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 
 namespace grainlab {
@@ -365,12 +364,9 @@ void World::forces_with(double dt) {
 }
 
 void World::forces(double dt) {
-  // One force loop per registered law, in registry order: the law is chosen
-  // once per step, and its coefficients are inlined into the loop.
-  static constexpr auto kernels = []<typename... Laws>(LawList<Laws...>) {
-    return std::array{&World::forces_with<Laws>...};
-  }(RegisteredLaws{});
-  (this->*kernels[model.law.index()])(dt);
+  // One force loop per registered law: the law is chosen once per step, and
+  // its coefficients are inlined into the loop.
+  with_law(model.law, [&]<typename Law>() { forces_with<Law>(dt); });
 }
 
 void World::integrate(double dt) {

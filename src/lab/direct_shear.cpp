@@ -4,6 +4,7 @@
 
 #include "core/error.h"
 #include "core/rng.h"
+#include "dynamics/laws/registry.h"
 #include "lab/grain_library.h"
 
 #include <algorithm>
@@ -220,10 +221,13 @@ bool DirectShearTest::at_rest(bool strict) const {
   if (std::abs(normal_stress() / sigma - 1) > tolerance) return false;
   // Kinetic energy small against the elastic energy stored in the contacts
   // (the law's, e.g. Hertz: (2/5) f delta per contact).
-  double elastic = 0;
-  for (const auto* list : {&world_.state.pairs, &world_.state.wall_pairs})
-    for (const PairContact& pc : *list)
-      if (in_contact(pc)) elastic += world_.model.law->elastic_energy(pc.normal_force, pc.geo.depth);
+  const double elastic = with_law(world_.model.law, [&]<typename Law>() {
+    double sum = 0;
+    for (const auto* list : {&world_.state.pairs, &world_.state.wall_pairs})
+      for (const PairContact& pc : *list)
+        if (in_contact(pc)) sum += Law::elastic_energy(pc.normal_force, pc.geo.depth);
+    return sum;
+  });
   return world_.kinetic_energy() < 1e-2 * elastic;
 }
 

@@ -23,8 +23,8 @@
 //
 // Servo (proportional-integral): v_z = G (e + I), e = sigma - sigma_target,
 // I <- I + beta e each step, with G = alpha A / (k_cap dt), where k_cap is the
-// summed tangent stiffness of the cap's contacts (the law's d f_n/d delta:
-// 1.5 f/delta for Hertz, f/delta for Hooke). If the specimen were a spring k_cap, the stress would
+// summed tangent stiffness of the cap's contacts (1.5 f/delta for Hertz,
+// f/delta for Hooke). If the specimen were a spring k_cap, the stress would
 // change by -alpha (e + I) per step: alpha = 0.05 removes an error in about
 // 1/alpha steps, slowly enough for the stress to cross the specimen. A purely
 // proportional servo following a dilating specimen at speed u lags by

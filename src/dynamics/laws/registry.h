@@ -37,6 +37,31 @@ constexpr std::size_t law_index(LawList<Laws...>) {
   return i;
 }
 
+// Calls f.template operator()<Law>() for the law `law` is a handle to: a
+// loop written inside f is compiled once per registered law with the law's
+// functions inlined (no call through a pointer per contact; the floating
+// point is that of the inlined expression, FMA contraction included).
+// This one searches the given list of laws.
+template <typename F, typename... Laws>
+decltype(auto) with_law_in(ContactLaw law, F& f, LawList<Laws...>) {
+  using Result = decltype(f.template operator()<DefaultLaw>());
+  if constexpr (std::is_void_v<Result>) {
+    std::size_t i = 0;
+    ((law.index() == i++ ? (f.template operator()<Laws>(), true) : false) || ...);
+  } else {
+    Result out{};
+    std::size_t i = 0;
+    ((law.index() == i++ ? (out = f.template operator()<Laws>(), true) : false) || ...);
+    return out;
+  }
+}
+
+// The same over RegisteredLaws: with_law(law, [&]<typename Law>() { ... }).
+template <typename F>
+decltype(auto) with_law(ContactLaw law, F&& f) {
+  return with_law_in(law, f, RegisteredLaws{});
+}
+
 // The handle of a registered law type, e.g. contact_law<HookeLaw>().
 template <typename Law>
 ContactLaw contact_law() {
