@@ -15,6 +15,7 @@
 // Every run uses the same preparation (deposition friction 0.12 under 100 g,
 // then the cap servo), so the achieved density differs by shape, as it does
 // for one pluviation procedure in the lab; the target tolerance is open.
+#include "dynamics/laws/registry.h"
 #include "core/error.h"
 #include "core/parallel.h"
 #include "core/timer.h"
@@ -94,7 +95,7 @@ void damping(const Options& o) {
   std::vector<double> peaks, dvs;
   for (const auto& [gn, gt] : {std::pair{20.0, 10.0}, std::pair{40.0, 20.0}, std::pair{80.0, 40.0}}) {
     DirectShearSpec spec = small_spec(o, "glass-beads");
-    spec.material.law = ContactLaw::HertzUser;
+    spec.material.law = contact_law<HertzUserLaw>();
     spec.material.grain.gamma_n = gn;
     spec.material.grain.gamma_t = gt;
     Outcome r;

@@ -1,43 +1,89 @@
-// Contact-law evaluators: each reduces a law to the four coefficients
-// K_n, C_n, K_t, C_t at the current overlap (derivations in material.h), and
-// one shared routine applies them with the tangential spring and Coulomb cap.
+// What a contact law is, and the one routine that applies any law.
+//
+// Symbols (paper section 2.2, DESIGN.md "Contact physics"): overlap delta (m),
+// unit normal n from body a to body b, effective mass m* = m_a m_b/(m_a+m_b),
+// effective radius R* = R_a R_b/(R_a+R_b), normal relative velocity
+// v_n = (v_b - v_a).n (negative while approaching), tangential part v_t.
+//
+// Every law is reduced, at the current overlap, to four coefficients
+//     f_n = K_n delta - C_n v_n          (clamped at 0: no tension)
+//     f_t = -K_t xi   - C_t v_t          (capped by Coulomb, mu f_n)
+// where xi is the tangential spring (m). A law lives in one file under
+// dynamics/laws/ (its derivation at the top) as a struct of static functions:
+//     name, parameters              config name; the Material fields it reads, with units
+//     validate(Material)            throws InputError for an impossible value of those fields
+//     mix(Material, Material)       PairCoefficients of a material pair (friction is mixed here)
+//     at(pair, delta, R*, m*)       K_n, C_n, K_t, C_t at this overlap (inline: the hot path)
+//     stiffness(LawCoefficients)    d f_n / d delta of the elastic force, from at()'s coefficients
+//     tangent_stiffness(f_n, delta) the same, from a contact's elastic force and overlap
+//     elastic_energy(f_n, delta)    integral of the elastic f_n from 0 to delta
+// and is registered by one line in dynamics/laws/registry.h. A ContactLaw is a
+// handle to a registered law; the force loop is instantiated once per law
+// (World::forces_with<Law>), so no call per contact goes through a pointer.
 #pragma once
 
 #include "core/types.h"
 #include "dynamics/material.h"
 
 #include <cmath>
+#include <cstdint>
+#include <string>
 
 namespace grainlab {
 
+// A law's coefficients at the current overlap.
 struct LawCoefficients {
   double k_n, c_n, k_t, c_t;
 };
 
-struct HookeLaw {
-  static LawCoefficients at(const PairCoefficients& p, double /*delta*/, double /*r_eff*/,
-                            double m_eff) {
-    return {p.k_n, p.gamma_n * m_eff, p.k_t, p.gamma_t * m_eff};
-  }
+// What the engine and the lab may ask of a registered law (the law's static
+// functions, behind pointers; none of them is called per contact per step).
+struct ContactLawEntry {
+  const char* name;        // config name, e.g. "hertz-material"
+  const char* parameters;  // the Material fields it reads, with units (for messages)
+  void (*validate)(const Material& m);
+  PairCoefficients (*mix)(const Material& a, const Material& b);
+  LawCoefficients (*at)(const PairCoefficients& p, double delta, double r_eff, double m_eff);
+  double (*stiffness)(const LawCoefficients& k);
+  double (*tangent_stiffness)(double f_n, double delta);
+  double (*elastic_energy)(double f_n, double delta);
 };
 
-struct HertzUserLaw {
-  static LawCoefficients at(const PairCoefficients& p, double delta, double r_eff, double m_eff) {
-    const double s = std::sqrt(r_eff * delta);
-    return {p.k_n * s, p.gamma_n * m_eff * s, p.k_t * s, p.gamma_t * m_eff * s};
-  }
+// A handle to a registered contact law: cheap to copy, compares by identity.
+// Default-constructed, it is the registry's default law.
+class ContactLaw {
+ public:
+  ContactLaw();
+  // The registered law at position `index` of the registry.
+  static ContactLaw at_index(std::size_t index);
+  // Position in the registry (selects the force kernel).
+  std::size_t index() const { return index_; }
+  // The law's functions.
+  const ContactLawEntry& operator*() const;
+  const ContactLawEntry* operator->() const { return &**this; }
+  friend bool operator==(ContactLaw, ContactLaw) = default;
+
+ private:
+  std::uint8_t index_;
 };
 
-struct HertzMaterialLaw {
-  static LawCoefficients at(const PairCoefficients& p, double delta, double r_eff, double m_eff) {
-    constexpr double two_sqrt_5_6 = 1.8257418583505538;  // 2 sqrt(5/6)
-    const double s = std::sqrt(r_eff * delta);
-    const double s_n = 2.0 * p.k_n * s;  // k_n holds E*
-    const double s_t = 8.0 * p.k_t * s;  // k_t holds G*
-    return {(2.0 / 3.0) * s_n, two_sqrt_5_6 * p.gamma_n * std::sqrt(s_n * m_eff), s_t,
-            two_sqrt_5_6 * p.gamma_t * std::sqrt(s_t * m_eff)};
-  }
-};
+// The law registered under `name` ("hooke", "hertz", "hertz-material", ...);
+// InputError listing the registered names otherwise.
+ContactLaw parse_contact_law(const std::string& name);
+// The config name of a law.
+const char* contact_law_name(ContactLaw law);
+// Every registered name, quoted and comma-separated (for messages).
+std::string contact_law_names();
+
+// Mixes two materials for the law: the smaller friction (the slipperier
+// surface governs: a lubricated wall stays lubricated) and the law's own rule.
+PairCoefficients mix(const Material& a, const Material& b, ContactLaw law);
+// Throws InputError naming the material and the field if a value is impossible
+// (density and friction for every law, then the law's own fields).
+void validate(const Material& m, ContactLaw law);
+// For a law's validate(): throws InputError "material 'name': field = value is
+// impossible; it must be rule" unless ok.
+void require_material_field(const Material& m, bool ok, const char* field, double value, const char* rule);
 
 // Kinematics of one touching contact at this step.
 struct ContactKinematics {

@@ -11,6 +11,7 @@
 #include "collision/shape_kind.h"
 #include "collision/shapes.h"
 #include "core/types.h"
+#include "dynamics/contact_law.h"
 #include "dynamics/material.h"
 #include "geometry/trimesh.h"
 
@@ -66,7 +67,7 @@ struct WallModel {
 };
 
 struct Model {
-  ContactLaw law = ContactLaw::HertzMaterial;
+  ContactLaw law;             // a registered law (dynamics/laws/registry.h); default hertz-material
   Vec3 gravity{0, 0, -9.81};  // m/s^2
   double density_scale = 1;   // multiplies inertial mass and inertia, not weight
   std::vector<Material> materials;

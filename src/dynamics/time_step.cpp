@@ -23,15 +23,8 @@ TimeStepEstimate critical_time_step(const Model& model, double fraction) {
         const bool wall = r_eff == b.radius;
         // A contact that cannot happen sets no limit.
         if (wall ? model.walls.empty() : model.bodies.size() < 2) continue;
-        LawCoefficients k{};
-        switch (model.law) {
-          case ContactLaw::Hooke: k = HookeLaw::at(p, delta, r_eff, m_eff); break;
-          case ContactLaw::HertzUser: k = HertzUserLaw::at(p, delta, r_eff, m_eff); break;
-          case ContactLaw::HertzMaterial: k = HertzMaterialLaw::at(p, delta, r_eff, m_eff); break;
-        }
-        // Hertz: f = K(delta) delta with K ~ sqrt(delta): df/ddelta = 1.5 K.
-        const double hertz = model.law == ContactLaw::Hooke ? 1.0 : 1.5;
-        const double stiff = std::max(hertz * k.k_n, k.k_t);
+        const LawCoefficients k = model.law->at(p, delta, r_eff, m_eff);
+        const double stiff = std::max(model.law->stiffness(k), k.k_t);
         const double dt = 2.0 * std::sqrt(m_eff / stiff);
         if (dt < best.critical) best = {dt, static_cast<Index>(i), stiff};
       }

@@ -2,8 +2,8 @@
 //
 // One contact is a spring of stiffness k between effective masses; the
 // semi-implicit Euler step is stable for dt < 2 sqrt(m/k) (the central
-// difference limit 2/omega). For Hertz the stiffness grows with the overlap:
-// k = d f_n / d delta = (3/2) K_n(delta) at the expected overlap delta_ref.
+// difference limit 2/omega). The normal stiffness is the law's tangent
+// k = d f_n / d delta at the expected overlap delta_ref (the law's stiffness()).
 // Rotation makes a contact feel lighter: a force at lever arm r on a body of
 // mass m and smallest principal moment I moves the contact point as a mass
 // m_c = 1 / (1/m + r^2/I); r is the bounding radius (the worst case). The

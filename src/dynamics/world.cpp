@@ -12,6 +12,7 @@
 #include "core/parallel.h"
 #include "core/timer.h"
 #include "dynamics/contact_law.h"
+#include "dynamics/laws/registry.h"
 #include "dynamics/integrator.h"
 #include "dynamics/time_step.h"
 
@@ -353,11 +354,9 @@ void World::forces_with(double dt) {
 }
 
 void World::forces(double dt) {
-  switch (model.law) {
-    case ContactLaw::Hooke: forces_with<HookeLaw>(dt); break;
-    case ContactLaw::HertzUser: forces_with<HertzUserLaw>(dt); break;
-    case ContactLaw::HertzMaterial: forces_with<HertzMaterialLaw>(dt); break;
-  }
+  // One force loop per registered law: the law is chosen once per step, and
+  // its coefficients are inlined into the loop.
+  with_law(model.law, [&]<typename Law>() { forces_with<Law>(dt); });
 }
 
 void World::integrate(double dt) {

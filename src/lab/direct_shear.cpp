@@ -4,6 +4,7 @@
 
 #include "core/error.h"
 #include "core/rng.h"
+#include "dynamics/laws/registry.h"
 #include "lab/grain_library.h"
 
 #include <algorithm>
@@ -198,9 +199,9 @@ void DirectShearTest::servo(World& w, double dt) {
   if (p == ShearPhase::Deposit || p == ShearPhase::Done) return;
   WallState& cap = w.state.walls[wall(Cap)];
   double k_cap = 0;
-  const double tangent = w.model.law == ContactLaw::Hooke ? 1.0 : 1.5;
   for (const Contact& pc : w.state.wall_contacts)
-    if (pc.a == wall(Cap) && in_contact(pc) && pc.geo.depth > 0) k_cap += tangent * pc.normal_force / pc.geo.depth;
+    if (pc.a == wall(Cap) && in_contact(pc) && pc.geo.depth > 0)
+      k_cap += w.model.law->tangent_stiffness(pc.normal_force, pc.geo.depth);
   if (k_cap <= 0) {
     cap.v.z() = -cap_speed_limit_;  // not touching yet: come down
     progress_.servo_integral = 0;
@@ -219,11 +220,14 @@ bool DirectShearTest::at_rest(bool strict) const {
   const double tolerance = strict ? spec_.consolidation.tolerance : std::max(spec_.consolidation.tolerance, 0.05);
   if (std::abs(normal_stress() / sigma - 1) > tolerance) return false;
   // Kinetic energy small against the elastic energy stored in the contacts
-  // (Hertz: (2/5) f delta per contact).
-  double elastic = 0;
-  for (const auto* list : {&world_.state.contacts, &world_.state.wall_contacts})
-    for (const Contact& pc : *list)
-      if (in_contact(pc)) elastic += 0.4 * pc.normal_force * pc.geo.depth;
+  // (the law's, e.g. Hertz: (2/5) f delta per contact).
+  const double elastic = with_law(world_.model.law, [&]<typename Law>() {
+    double sum = 0;
+    for (const auto* list : {&world_.state.contacts, &world_.state.wall_contacts})
+      for (const Contact& pc : *list)
+        if (in_contact(pc)) sum += Law::elastic_energy(pc.normal_force, pc.geo.depth);
+    return sum;
+  });
   return world_.kinetic_energy() < 1e-2 * elastic;
 }
 

@@ -5,6 +5,7 @@
 // 10 x 6 largest grains (ASTM D3080), about 1100 grains of 200 faces.
 #pragma once
 
+#include "dynamics/contact_law.h"
 #include "dynamics/material.h"
 
 #include <cstdint>
@@ -24,7 +25,7 @@ struct GrainsSpec {
 
 struct MaterialSpec {
   std::string preset;                  // crushed-limestone | griffin | ottawa | glass-beads | "" (use values below)
-  ContactLaw law = ContactLaw::HertzMaterial;
+  ContactLaw law;  // a registered law; default hertz-material
   Material grain = [] {
     Material m;
     m.name = "grain";

@@ -19,7 +19,7 @@ struct SettlingBedSpec {
   double spacing = 1.05;          // lattice spacing / grain bounding diameter
   int columns = 0;                // lattice columns per side (0: about cbrt(grains)*1.3)
   std::uint64_t seed = 1;
-  ContactLaw law = ContactLaw::HertzMaterial;
+  ContactLaw law;  // a registered law; default hertz-material
   Material material = [] {
     Material m;
     m.name = "bed";

@@ -4,6 +4,7 @@
 // maximum overlap x_m = (5 m* v^2 / (4 K))^{2/5} and the duration
 // t_c = 2 (x_m / v) \int_0^1 du / sqrt(1 - u^{5/2})
 //     = 2 (x_m / v) sqrt(pi) Gamma(7/5) / Gamma(9/10).
+#include "dynamics/laws/registry.h"
 #include "dynamics/world.h"
 
 #include <gtest/gtest.h>
@@ -74,7 +75,7 @@ TEST(HertzImpact, ElasticDurationMatchesClosedForm) {
   const double mass = mat.density * 4.0 / 3.0 * M_PI * r * r * r;
   const double e_star = mat.youngs_modulus / (2 * (1 - mat.poisson_ratio * mat.poisson_ratio));
   const double expected = hertz_duration(0.5 * mass, 0.5 * r, e_star, v);
-  const Impact got = simulate_impact(ContactLaw::HertzMaterial, mat, r, v, 400, expected);
+  const Impact got = simulate_impact(contact_law<HertzMaterialLaw>(), mat, r, v, 400, expected);
   std::printf("Hertz (material) contact duration: measured / closed form = %.5f, restitution %.5f\n",
               got.duration / expected, got.restitution);
   EXPECT_NEAR(got.duration / expected, 1.0, 0.01);
@@ -91,7 +92,7 @@ TEST(HertzImpact, UserFormWithoutDampingMatchesClosedForm) {
   const double r = 0.4e-3, v = 0.1;
   const double mass = mat.density * 4.0 / 3.0 * M_PI * r * r * r;
   const double expected = hertz_duration(0.5 * mass, 0.5 * r, 0.75 * mat.k_n, v);
-  const Impact got = simulate_impact(ContactLaw::HertzUser, mat, r, v, 400, expected);
+  const Impact got = simulate_impact(contact_law<HertzUserLaw>(), mat, r, v, 400, expected);
   EXPECT_NEAR(got.duration / expected, 1.0, 0.01);
   EXPECT_NEAR(got.restitution, 1.0, 0.01);
 }
@@ -106,7 +107,7 @@ TEST_P(HertzRestitution, MeasuredEqualsRequested) {
   const double e_star = mat.youngs_modulus / (2 * (1 - mat.poisson_ratio * mat.poisson_ratio));
   for (double v : {0.05, 0.5}) {  // restitution must not depend on the speed
     const double t = hertz_duration(0.5 * mass, 0.5 * r, e_star, v);
-    const Impact got = simulate_impact(ContactLaw::HertzMaterial, mat, r, v, 400, t);
+    const Impact got = simulate_impact(contact_law<HertzMaterialLaw>(), mat, r, v, 400, t);
     std::printf("restitution requested %.2f at %.2f m/s: measured %.5f\n", mat.restitution, v, got.restitution);
     EXPECT_NEAR(got.restitution / mat.restitution, 1.0, 0.01) << "v = " << v;
   }
@@ -118,7 +119,7 @@ TEST(HertzImpact, SphereOnWallRestitution) {
   Material mat = glass();
   mat.restitution = 0.6;
   World w;
-  w.model.law = ContactLaw::HertzMaterial;
+  w.model.law = contact_law<HertzMaterialLaw>();
   w.model.gravity = Vec3::Zero();
   const Index m = w.model.add_material(mat);
   const double r = 0.5e-3, v = 0.3;

@@ -1,5 +1,6 @@
 // A block on an incline: it sticks below the friction angle atan(mu) and
 // slides above it with a = g (sin theta - mu cos theta).
+#include "dynamics/laws/registry.h"
 #include "dynamics/world.h"
 #include "geometry/primitives.h"
 
@@ -20,7 +21,7 @@ struct Slide {
 // A 10 x 10 x 6 mm block resting flat on a plane tilted by theta about y.
 Slide slide_block(double theta, double mu) {
   World w;
-  w.model.law = ContactLaw::HertzMaterial;
+  w.model.law = contact_law<HertzMaterialLaw>();
   Material mat;
   mat.density = 2650;
   mat.youngs_modulus = 1e8;

@@ -1,4 +1,5 @@
 // Restitution calibration of the Hertz-material law and material validation.
+#include "dynamics/laws/registry.h"
 #include "core/error.h"
 #include "dynamics/material.h"
 
@@ -34,7 +35,7 @@ TEST(Material, ImpossibleValuesAreRefusedByName) {
   m.name = "quartz";
   m.density = -1;
   try {
-    validate(m, ContactLaw::HertzMaterial);
+    validate(m, contact_law<HertzMaterialLaw>());
     FAIL() << "negative density accepted";
   } catch (const InputError& err) {
     EXPECT_NE(std::string(err.what()).find("quartz"), std::string::npos);
@@ -42,6 +43,6 @@ TEST(Material, ImpossibleValuesAreRefusedByName) {
   }
   m.density = 2650;
   m.restitution = 1.5;
-  EXPECT_THROW(validate(m, ContactLaw::HertzMaterial), InputError);
+  EXPECT_THROW(validate(m, contact_law<HertzMaterialLaw>()), InputError);
   EXPECT_THROW(parse_contact_law("hertzian"), InputError);
 }

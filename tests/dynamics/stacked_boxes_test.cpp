@@ -1,6 +1,7 @@
 // A small box resting face-down, off-centre, on a larger box on a plane: the
 // stack settles (kinetic energy decays) and the box-box contact point stays
 // put, at the centroid of the overlap (the small box's footprint).
+#include "dynamics/laws/registry.h"
 #include "dynamics/world.h"
 #include "geometry/primitives.h"
 
@@ -31,7 +32,7 @@ Quat box_orientation(const World& w, Index shape, const Vec3& half) {
 
 TEST(StackedBoxes, SettleWithContactPointAtOverlapCentroid) {
   World w;
-  w.model.law = ContactLaw::HertzMaterial;
+  w.model.law = contact_law<HertzMaterialLaw>();
   Material mat;
   mat.density = 2650;
   mat.youngs_modulus = 1e8;

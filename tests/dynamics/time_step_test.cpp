@@ -1,4 +1,5 @@
 // The critical time step: a step above it is refused with a useful message.
+#include "dynamics/laws/registry.h"
 #include "core/error.h"
 #include "dynamics/world.h"
 #include "geometry/primitives.h"
@@ -11,7 +12,7 @@ TEST(TimeStep, PaperTable1StepIsRefusedForRealQuartzGrains) {
   // Table 1: k_n = 1e12, k_t = 8e11, gamma_n = 40, gamma_t = 20, dt = 1e-5 s,
   // for 0.707-0.841 mm grains of density 2650: unstable.
   World w;
-  w.model.law = ContactLaw::HertzUser;
+  w.model.law = contact_law<HertzUserLaw>();
   Material m;
   m.density = 2650;
   m.k_n = 1e12;

@@ -1,5 +1,6 @@
 // The config file: defaults, round trip, presets, and the messages for every
 // kind of bad input (they must name the file, the key and the line).
+#include "dynamics/laws/registry.h"
 #include "io/config.h"
 
 #include "core/error.h"
@@ -113,8 +114,8 @@ TEST(Config, IntegersAreAcceptedForNumbers) {
 }
 
 TEST(Config, ContactLawNames) {
-  EXPECT_EQ(parse_config("[material]\ncontact_law = \"hooke\"\n", "l.toml").material.law, ContactLaw::Hooke);
-  EXPECT_EQ(parse_config("[material]\ncontact_law = \"hertz\"\n", "l.toml").material.law, ContactLaw::HertzUser);
+  EXPECT_EQ(parse_config("[material]\ncontact_law = \"hooke\"\n", "l.toml").material.law, contact_law<HookeLaw>());
+  EXPECT_EQ(parse_config("[material]\ncontact_law = \"hertz\"\n", "l.toml").material.law, contact_law<HertzUserLaw>());
   const std::string msg = parse_error("[material]\ncontact_law = \"mindlin\"\n");
   EXPECT_TRUE(has(msg, "test.toml (line 2")) << msg;
   EXPECT_TRUE(has(msg, "material.contact_law")) << msg;

@@ -2,6 +2,7 @@
 // field-by-field comparison of two run specs.
 #pragma once
 
+#include "dynamics/laws/registry.h"
 #include "lab/direct_shear_spec.h"
 
 #include <gtest/gtest.h>
@@ -99,7 +100,7 @@ inline DirectShearSpec all_fields_changed() {
   s.seed = 987654321987ull;
   s.grains = {"angular", "/tmp", 7, 321, 0.5e-3 + 1e-19, 0.9e-3};
   s.material.preset = "ottawa";  // the explicit values below override it
-  s.material.law = ContactLaw::HertzUser;
+  s.material.law = contact_law<HertzUserLaw>();
   s.material.grain.density = 2500.125;
   s.material.grain.friction = 0.1 + 0.2;  // 0.30000000000000004: needs all 17 digits
   s.material.grain.youngs_modulus = 7.1e10;
