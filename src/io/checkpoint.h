@@ -29,7 +29,7 @@ struct Checkpoint {
 };
 
 // Current checkpoint format version; files of another version are refused.
-inline constexpr std::uint32_t kCheckpointVersion = 1;
+inline constexpr std::uint32_t kCheckpointVersion = 2;  // 2: protocol bytes through core/bytes.h, no Model fields
 
 // Writes a checkpoint atomically (RunError on failure).
 void save_checkpoint(const std::filesystem::path& path, const State& state, std::span<const std::uint8_t> protocol,
