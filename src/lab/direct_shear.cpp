@@ -92,24 +92,31 @@ bool DirectShearTest::check_rest(ShearPhase p) {
   if (p == ShearPhase::Deposit) {
     calm = deposit_settled(world_, specimen_);
   } else {
-    const bool strict = p == ShearPhase::Consolidate;
     const auto& c = spec_.consolidation;
-    const double tolerance = strict ? c.tolerance : std::max(c.tolerance, 0.05);
-    calm = std::abs(normal_stress() / c.normal_stress - 1) <= tolerance &&
-           (!strict || p_.window.averaged_ratio(world_) <= c.max_unbalanced) &&
-           kinetic_small_against_elastic(world_);
+    const double tolerance = p == ShearPhase::Consolidate ? c.tolerance : std::max(c.tolerance, 0.05);
+    calm = std::abs(normal_stress() / c.normal_stress - 1) <= tolerance && kinetic_small_against_elastic(world_);
   }
-  const bool rest = p_.calm.check(calm);
+  bool rest = p_.calm.check(calm);
+  // The consolidation also needs the static balance: each grain's resultant
+  // averaged over the whole calm run (kCalmChecks x kCheckEvery steps). The
+  // window spans the run rather than one check interval because the packing
+  // rings in collective modes longer than 50 steps: in the tiny test box the
+  // ratio averaged over 50 steps swings up to 0.014 while over 1000 steps it
+  // is 0.0008.
   const double averaged_unbalanced = p_.window.averaged_ratio(world_);
-  p_.window.reset();
+  const int window = p_.window.steps();
+  if (rest && p == ShearPhase::Consolidate && averaged_unbalanced > spec_.consolidation.max_unbalanced) {
+    p_.calm.reset();
+    rest = false;
+  }
+  if (p_.calm.count() == 0 || rest) p_.window.reset();
   const std::int64_t in_phase = world_.state.step - phase_step(p);
   if (!rest && in_phase > 400000)
     throw RunError(fmt::format(
         "the {} phase did not come to rest in {} steps (normal stress {:.4g} Pa, unbalanced force "
         "ratio {:.3g} averaged over {} steps, kinetic energy {:.3g} J): try a smaller time step, more "
         "damping (lower restitution) or a larger consolidation.max_unbalanced",
-        shear_phase_name(p), in_phase, normal_stress(), averaged_unbalanced, kCheckEvery,
-        world_.kinetic_energy()));
+        shear_phase_name(p), in_phase, normal_stress(), averaged_unbalanced, window, world_.kinetic_energy()));
   return rest;
 }
 

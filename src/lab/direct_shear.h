@@ -19,7 +19,8 @@
 //                output.strain_interval of shear strain.
 // Rest: the compaction accepts a 5 % stress error and skips the unbalanced
 // force ratio; the consolidation asks the configured tolerance and the
-// averaged ratio too; both ask the kinetic energy small against the elastic.
+// unbalanced-force ratio averaged over its whole calm run too; both ask the
+// kinetic energy small against the elastic.
 //
 // Measured (DESIGN.md "Walls and the direct shear box"): shear force F on the
 // upper half (minus the x force the grains put on its slabs and the cap),

@@ -6,9 +6,11 @@
 //    f = K delta^{3/2}, so the work int f d(delta) = (2/5) f delta).
 //  * Unbalanced-force ratio: mean |resultant| per grain over the mean
 //    |contact force| (1 with no contacts). Averaged: each grain's resultant
-//    is first averaged over the steps of a check window (ForceWindow): the
-//    static imbalance, without the ringing of stiff contacts that keeps the
-//    instantaneous ratio of faceted grains at 0.1-0.2 in a packing at rest.
+//    is first averaged over the steps of a window (ForceWindow; the direct
+//    shear's spans the current calm run, up to 1000 steps): the static
+//    imbalance, without the ringing of stiff contacts and of the packing's
+//    collective modes, which keeps the instantaneous ratio of faceted grains
+//    at 0.1-0.2 in a packing at rest.
 //  * Calm checks: a check every kCheckEvery steps; kCalmChecks consecutive
 //    calm checks mean at rest (CalmCounter).
 #pragma once
@@ -40,6 +42,8 @@ class ForceWindow {
   void add(const std::vector<Vec3>& forces);
   // Starts a new window.
   void reset();
+  // Steps summed so far.
+  int steps() const { return steps_; }
   // The unbalanced-force ratio of the window's mean resultants (the
   // instantaneous one if the window is empty).
   double averaged_ratio(const World& w) const;
@@ -61,6 +65,8 @@ class CalmCounter {
     return count_ >= kCalmChecks;
   }
   void reset() { count_ = 0; }
+  // Consecutive calm checks so far.
+  int count() const { return count_; }
   void save(ByteWriter& out) const { out.i32(count_); }
   void load(ByteReader& in) { count_ = in.i32(); }
 
