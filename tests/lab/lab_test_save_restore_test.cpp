@@ -20,7 +20,7 @@ namespace {
 template <typename Reached>
 void save_restore_continue(const DirectShearSpec& spec, Reached reached, int steps) {
   std::unique_ptr<LabTest> a = make_lab_test("direct-shear", spec);
-  while (!reached(*a)) ASSERT_TRUE(a->advance(50)) << "the test ended before the state to save";
+  while (!reached(*a)) ASSERT_TRUE(a->advance(7)) << "the test ended before the state to save";
   const std::vector<std::uint8_t> bytes = encode_checkpoint(a->world().state, a->save(), 7);
   for (int i = 0; i < steps; i += 10) a->advance(10);
 
