@@ -67,7 +67,7 @@ Outcome run(const DirectShearSpec& spec) {
   Outcome o;
   o.e = t.achieved_void_ratio();
   o.dr = t.achieved_relative_density();
-  o.summary = t.summary();
+  o.summary = t.shear_summary();
   o.final_dv = t.cap_displacement();
   o.grains = t.world().model.bodies.size();
   o.wall_s = clock.seconds();

@@ -18,7 +18,7 @@
 #include "io/shear_analysis.h"
 #include "io/shear_snapshots.h"
 #include "io/table.h"
-#include "lab/direct_shear.h"
+#include "lab/lab_test.h"
 
 #include <fmt/format.h>
 
@@ -44,15 +44,21 @@ struct RunOptions {
   bool no_report = false;
 };
 
-void write_series(const DirectShearTest& test, const std::filesystem::path& out) {
+// The summary value named key (top level), 0 if the test has none.
+double summary_value(const LabTest& test, const std::string& key) {
+  for (const SummaryValue& v : test.summary())
+    if (v.group.empty() && v.key == key) return v.value;
+  return 0;
+}
+
+void write_series(const LabTest& test, const std::filesystem::path& out) {
   Table t;
   t.columns = test.series_columns();
   t.rows = test.series();
   write_file_atomically(out / "series.csv", t.to_csv());
 }
 
-void write_run_json(const DirectShearTest& test, const std::filesystem::path& out, double wall_s) {
-  const ShearSummary s = test.summary();
+void write_run_json(const LabTest& test, const std::filesystem::path& out, double wall_s) {
   const World& w = test.world();
   nlohmann::json j;
   j["grainlab_version"] = "0.1.0";
@@ -61,20 +67,8 @@ void write_run_json(const DirectShearTest& test, const std::filesystem::path& ou
   j["grains"] = w.model.bodies.size();
   j["time_step_s"] = test.time_step();
   j["density_scaling"] = w.model.density_scale;
-  j["shear_speed_m_per_s"] = test.shear_speed();
-  j["mean_equivalent_diameter_m"] = test.mean_diameter();
-  j["phase"] = shear_phase_name(test.phase());
-  j["preparation"] = {{"void_ratio", test.achieved_void_ratio()},
-                      {"relative_density", test.achieved_relative_density()},
-                      {"target_void_ratio", test.spec().target_void_ratio()}};
-  j["peaks"] = {{"friction_angle_deg", s.peak_friction_angle_deg},
-                {"strain_at_peak_friction", s.strain_at_peak_friction},
-                {"stress_ratio", s.peak_stress_ratio},
-                {"dilation_angle_deg", s.peak_dilation_angle_deg},
-                {"strain_at_peak_dilation", s.strain_at_peak_dilation}};
-  j["final"] = {{"friction_angle_deg", s.final_friction_angle_deg},
-                {"dilation_angle_deg", s.final_dilation_angle_deg},
-                {"void_ratio", s.final_void_ratio}};
+  j["phase"] = test.phase_name();
+  for (const SummaryValue& v : test.summary()) (v.group.empty() ? j : j[v.group])[v.key] = v.value;
   j["timings"] = {{"wall_s", wall_s}, {"steps", w.state.step}, {"simulated_s", w.state.time}};
   add_micromechanics_summary(j, test);
   write_json_file(out / "run.json", j);
@@ -92,7 +86,8 @@ int run(const RunOptions& o) {
                                               : load_config(o.file);
 
   // Everything that can refuse the run happens before anything is written.
-  DirectShearTest test(spec);
+  const std::unique_ptr<LabTest> made = make_lab_test("direct-shear", spec);
+  LabTest& test = *made;
   test.world().settings.threads = spec.numerics.threads;
   observe_shear_analysis(test);  // the same on --resume: the rows of both runs then match
   const std::filesystem::path out = spec.output.folder;
@@ -110,16 +105,16 @@ int run(const RunOptions& o) {
     if (ck.config_hash != config_hash(spec))
       input_error("--resume: checkpoint '{}' belongs to another config", checkpoint.string());
     test.world().state = std::move(ck.state);
-    test.load_progress(ck.protocol);
-    fmt::print("resuming at step {} ({} phase, shear strain {:.4f})\n", test.world().state.step,
-               shear_phase_name(test.phase()), test.shear_strain());
+    test.load(ck.protocol);
+    fmt::print("resuming at step {} ({} phase, {} {:.4f})\n", test.world().state.step, test.phase_name(),
+               test.progress_label(), test.progress());
   } else {
     std::filesystem::create_directories(out);
     write_file_atomically(out / "config.toml", to_toml(spec));
   }
   ShearSnapshots snapshots(out, test, o.resume);
   const auto save = [&] {
-    save_checkpoint(checkpoint, test.world().state, test.save_progress(), config_hash(spec));
+    save_checkpoint(checkpoint, test.world().state, test.save(), config_hash(spec));
   };
 
   const World& w = test.world();
@@ -128,14 +123,14 @@ int run(const RunOptions& o) {
              w.model.bodies.size(), spec.grains.folder.empty() ? spec.grains.preset : spec.grains.folder,
              spec.box.length * 1e3, spec.box.width * 1e3, spec.box.height * 1e3,
              spec.consolidation.normal_stress * 1e-3, test.time_step(), w.model.density_scale,
-             test.shear_speed() * 1e3, resolve_threads(w.settings.threads));
+             summary_value(test, "shear_speed_m_per_s") * 1e3, resolve_threads(w.settings.threads));
   std::signal(SIGINT, on_stop_signal);
   std::signal(SIGTERM, on_stop_signal);
 
   Stopwatch clock, since_checkpoint, since_line;
   std::size_t written_rows = test.series().size();
-  ShearPhase phase = test.phase();
-  std::int64_t shear_start_step = test.phase_step(ShearPhase::Shear), steps_at_start = w.state.step;
+  int phase = test.phase_index();
+  std::int64_t shear_start_step = test.loading_start_step(), steps_at_start = w.state.step;
   bool running = true;
   while (running) {
     running = test.advance(200);
@@ -144,28 +139,22 @@ int run(const RunOptions& o) {
       written_rows = test.series().size();
     }
     snapshots.update(test);
-    if (test.phase() != phase) {
-      phase = test.phase();
-      if (phase == ShearPhase::Shear) shear_start_step = w.state.step;
-      if (phase == ShearPhase::Consolidate)
-        fmt::print("  prepared: void ratio {:.3f} (target {:.3f}), Dr {:.0f} %\n", test.achieved_void_ratio(),
-                   spec.target_void_ratio(), 100 * test.achieved_relative_density());
-      fmt::print("  phase {} from step {}\n", shear_phase_name(phase), w.state.step);
+    if (test.phase_index() != phase) {
+      phase = test.phase_index();
+      if (test.loading()) shear_start_step = w.state.step;
+      if (const std::string note = test.phase_note(); !note.empty()) fmt::print("  {}\n", note);
+      fmt::print("  phase {} from step {}\n", test.phase_name(), w.state.step);
     }
     if (!o.quiet && (since_line.seconds() > 2 || !running)) {
       since_line.reset();
       const double rate = (w.state.step - steps_at_start) / std::max(1e-9, clock.seconds());
       std::string eta = "";
-      if (phase == ShearPhase::Shear && test.shear_strain() > 0) {
-        const double steps_per_strain = (w.state.step - shear_start_step) / test.shear_strain();
-        eta = fmt::format("  ETA {:.0f} s",
-                          (spec.shear.final_strain - test.shear_strain()) * steps_per_strain / rate);
+      if (test.loading() && test.progress() > 0) {
+        const double steps_per_strain = (w.state.step - shear_start_step) / test.progress();
+        eta = fmt::format("  ETA {:.0f} s", (test.final_progress() - test.progress()) * steps_per_strain / rate);
       }
-      fmt::print("  [{}] step {}  strain {:.4f}  stress ratio {:.3f}  sigma {:.1f} kPa  e {:.3f}  "
-                 "{:.0f} steps/s{}\n",
-                 shear_phase_name(phase), w.state.step, test.shear_strain(),
-                 test.normal_force() > 0 ? test.shear_force() / test.normal_force() : 0.0,
-                 test.normal_stress() * 1e-3, test.void_ratio(), rate, eta);
+      fmt::print("  [{}] step {}  {}  {:.0f} steps/s{}\n", test.phase_name(), w.state.step, test.status_line(),
+                 rate, eta);
       std::fflush(stdout);
     }
     if (since_checkpoint.seconds() > spec.output.checkpoint_interval) {
@@ -184,12 +173,9 @@ int run(const RunOptions& o) {
   write_analysis_files(test, out);
   snapshots.finish(test);
   write_run_json(test, out, clock.seconds());
-  const ShearSummary s = test.summary();
-  fmt::print("done in {:.0f} s: peak friction angle {:.1f} deg (stress ratio {:.3f}) at strain {:.3f}; "
-             "peak dilation angle {:.1f} deg\noutputs in {}: series.csv, run.json, checkpoint.bin, analysis/, "
+  fmt::print("done in {:.0f} s: {}\noutputs in {}: series.csv, run.json, checkpoint.bin, analysis/, "
              "paraview/ ({} snapshots: open grains.pvd, contacts.pvd, walls.pvd in ParaView)\n",
-             clock.seconds(), s.peak_friction_angle_deg, s.peak_stress_ratio, s.strain_at_peak_friction,
-             s.peak_dilation_angle_deg, out.string(), snapshots.writer().grains().entries().size());
+             clock.seconds(), test.result_line(), out.string(), snapshots.writer().grains().entries().size());
   if (!o.no_report) {
     // The series and run.json are written: a report that fails only warns.
     int rc = -1;

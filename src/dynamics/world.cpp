@@ -92,8 +92,34 @@ double World::critical_time_step() {
   return grainlab::critical_time_step(model, settings.expected_overlap_fraction).critical;
 }
 
+void World::set_overrides(PhaseOverrides o) {
+  overrides_ = std::move(o);
+  if (prepared_) mix_pair_table();
+}
+
+void World::mix_pair_table() {
+  // Only friction is overridden, and it mixes by the minimum (material.cpp
+  // mix()): the Model's table with that one coefficient recomputed.
+  const std::size_t n = model.materials.size();
+  std::vector<double> mu(n);
+  for (std::size_t m = 0; m < n; ++m) mu[m] = model.materials[m].friction;
+  for (const auto& [m, f] : overrides_.friction) {
+    if (m < 0 || static_cast<std::size_t>(m) >= n)
+      input_error("friction override for material {} but the model has {} materials", m, n);
+    if (!(f >= 0 && std::isfinite(f))) input_error("friction override {} must be >= 0", f);
+    mu[m] = f;
+  }
+  pair_table_.resize(n * n);
+  for (std::size_t a = 0; a < n; ++a)
+    for (std::size_t b = 0; b < n; ++b) {
+      pair_table_[a * n + b] = model.pair(static_cast<Index>(a), static_cast<Index>(b));
+      pair_table_[a * n + b].friction = std::min(mu[a], mu[b]);
+    }
+}
+
 void World::prepare() {
   model.finalize();
+  mix_pair_table();
   const std::size_t n = model.bodies.size();
   rot_.resize(n);
   aabb_.resize(n);
@@ -316,7 +342,7 @@ void World::forces_with(double dt) {
     const BodyModel &ma = model.bodies[pc.a], &mb = model.bodies[pc.b];
     const BodyState &sa = state.bodies[pc.a], &sb = state.bodies[pc.b];
     const Vec3& p = pc.geo.point;
-    evaluate<Law>(pc, model.pair(ma.material, mb.material),
+    evaluate<Law>(pc, pair(ma.material, mb.material),
                   (sb.v + sb.w.cross(p - sb.x)) - (sa.v + sa.w.cross(p - sa.x)), sb.w - sa.w,
                   ma.mass * mb.mass / (ma.mass + mb.mass), ma.radius * mb.radius / (ma.radius + mb.radius), dt);
   };
@@ -328,15 +354,16 @@ void World::forces_with(double dt) {
     const BodyModel& mb = model.bodies[pc.b];
     const BodyState& sb = state.bodies[pc.b];
     const Vec3& p = pc.geo.point;
-    evaluate<Law>(pc, model.pair(model.walls[pc.a].material, mb.material),
+    evaluate<Law>(pc, pair(model.walls[pc.a].material, mb.material),
                   (sb.v + sb.w.cross(p - sb.x)) - state.walls[pc.a].v, sb.w, mb.mass, mb.radius, dt);
   };
   parallel_for(static_cast<std::ptrdiff_t>(state.wall_contacts.size()), wall_pair, 128, settings.threads);
 
   // Serial sums in contact order: independent of the thread count.
   const std::size_t n = state.bodies.size();
+  const Vec3 g = gravity();
   for (std::size_t i = 0; i < n; ++i) {
-    force_[i] = model.bodies[i].gravity_mass * model.gravity;
+    force_[i] = model.bodies[i].gravity_mass * g;
     torque_[i].setZero();
   }
   for (WallState& w : state.walls) w.force.setZero();

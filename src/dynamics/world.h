@@ -16,12 +16,23 @@
 #include "dynamics/world_settings.h"
 
 #include <functional>
+#include <optional>
+#include <utility>
 #include <vector>
 
 namespace grainlab {
 
 // Translational plus rotational kinetic energy of one body (J).
 double kinetic_energy_of(const BodyModel& m, const BodyState& s);
+
+// Settings a lab protocol's phase lays over the Model while the phase lasts
+// (deposition gravity, deposition friction): the Model itself never changes
+// during a run. The step reads them; they are not part of the State (the
+// protocol derives them from its phase, also after a checkpoint load).
+struct PhaseOverrides {
+  std::optional<Vec3> gravity;                     // m/s^2, replaces model.gravity
+  std::vector<std::pair<Index, double>> friction;  // (material, Coulomb mu) replacing that material's friction
+};
 
 class World {
  public:
@@ -46,6 +57,17 @@ class World {
   Index add_box_wall(const Vec3& center, const Vec3& half, const Quat& q = Quat::Identity(),
                      Index material = 0, std::string name = "box");
   void add_controller(Controller c) { controllers_.push_back(std::move(c)); }
+
+  // Lays phase settings over the Model (replacing any earlier ones); friction
+  // still mixes by the minimum of the two materials, as Model::finalize() does.
+  void set_overrides(PhaseOverrides o);
+  const PhaseOverrides& overrides() const { return overrides_; }
+  // Gravity in effect: the override's, else the Model's (m/s^2).
+  const Vec3& gravity() const { return overrides_.gravity ? *overrides_.gravity : model.gravity; }
+  // Coefficients in effect for a material pair (the Model's, overrides applied); valid once stepped.
+  const PairCoefficients& pair(Index ma, Index mb) const {
+    return pair_table_[static_cast<std::size_t>(ma) * model.materials.size() + mb];
+  }
 
   // Advances by dt seconds. Throws InputError if dt exceeds the critical
   // step, RunError if the state became non-finite.
@@ -76,6 +98,7 @@ class World {
   template <typename Law> void forces_with(double dt);
   void integrate(double dt);
   void bookkeeping();
+  void mix_pair_table();
   int collide_pair(CandidatePair& pc, SubContact* out) const;
   int collide_wall(CandidatePair& pc, SubContact* out) const;
   void collide_list(std::vector<CandidatePair>& pairs, bool walls, std::vector<Contact>& contacts);
@@ -83,6 +106,8 @@ class World {
   PosedShape posed_wall(Index w) const;
 
   std::vector<Controller> controllers_;
+  PhaseOverrides overrides_;
+  std::vector<PairCoefficients> pair_table_;  // model.pair() with the friction overrides
   SweepAndPrune sap_;
   bool prepared_ = false;
   double checked_dt_ = -1;  // the step last checked against the critical step

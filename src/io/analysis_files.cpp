@@ -112,7 +112,7 @@ nlohmann::json fabric_entry(const State& state, const analysis::GrainMask* mask,
   return j;
 }
 
-void write_analysis_files(const DirectShearTest& test, const std::filesystem::path& folder) {
+void write_analysis_files(const LabTest& test, const std::filesystem::path& folder) {
   const std::filesystem::path dir = folder / "analysis";
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);

@@ -22,7 +22,7 @@
 
 #include "analysis/grain_mask.h"
 #include "dynamics/state.h"
-#include "lab/direct_shear.h"
+#include "lab/lab_test.h"
 
 #include <nlohmann/json.hpp>
 
@@ -46,6 +46,6 @@ nlohmann::json fabric_entry(const State& state, const analysis::GrainMask* mask,
 
 // Writes folder/analysis/{profile.csv, band.json, fabric.json, force_chains.csv}
 // for the test's current state (creating analysis/; RunError if a write fails).
-void write_analysis_files(const DirectShearTest& test, const std::filesystem::path& folder);
+void write_analysis_files(const LabTest& test, const std::filesystem::path& folder);
 
 }  // namespace grainlab

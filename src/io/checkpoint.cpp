@@ -12,13 +12,13 @@
 //   x_at_rebuild (3 f64 each), protocol bytes.
 #include "io/checkpoint.h"
 
+#include "core/bytes.h"
 #include "core/error.h"
 #include "io/atomic_file.h"
 #include "io/config.h"
 
 #include <fmt/format.h>
 
-#include <bit>
 #include <cstring>
 #include <fstream>
 #include <iterator>
@@ -37,89 +37,14 @@ namespace {
 constexpr char kMagic[8] = {'G', 'L', 'C', 'K', 'P', 'T', '\r', '\n'};
 constexpr std::size_t kHeaderSize = 8 + 4 + 4 + 8 + 8;
 
-// Appends little-endian values.
-class Writer {
- public:
-  std::vector<std::uint8_t> bytes;
+// The portable byte writer/reader of core/bytes.h, with the checkpoint's messages.
+using Writer = ByteWriter;
+using Reader = ByteReader;
 
-  void u8(std::uint8_t v) { bytes.push_back(v); }
-  void u32(std::uint32_t v) {
-    for (int i = 0; i < 4; ++i) bytes.push_back(static_cast<std::uint8_t>(v >> (8 * i)));
-  }
-  void u64(std::uint64_t v) {
-    for (int i = 0; i < 8; ++i) bytes.push_back(static_cast<std::uint8_t>(v >> (8 * i)));
-  }
-  void i32(std::int32_t v) { u32(static_cast<std::uint32_t>(v)); }
-  void i64(std::int64_t v) { u64(static_cast<std::uint64_t>(v)); }
-  void f64(double v) { u64(std::bit_cast<std::uint64_t>(v)); }
-  void vec(const Vec3& v) {
-    f64(v.x()), f64(v.y()), f64(v.z());
-  }
-  void quat(const Quat& q) {
-    f64(q.x()), f64(q.y()), f64(q.z()), f64(q.w());
-  }
-};
-
-// Reads little-endian values; any read past the end is a truncated file.
-class Reader {
- public:
-  Reader(std::span<const std::uint8_t> bytes, const std::string& source) : bytes_(bytes), source_(source) {}
-
-  std::size_t left() const { return bytes_.size() - pos_; }
-  std::uint8_t u8() { return take(1)[0]; }
-  std::uint32_t u32() {
-    const std::uint8_t* p = take(4);
-    std::uint32_t v = 0;
-    for (int i = 0; i < 4; ++i) v |= static_cast<std::uint32_t>(p[i]) << (8 * i);
-    return v;
-  }
-  std::uint64_t u64() {
-    const std::uint8_t* p = take(8);
-    std::uint64_t v = 0;
-    for (int i = 0; i < 8; ++i) v |= static_cast<std::uint64_t>(p[i]) << (8 * i);
-    return v;
-  }
-  std::int32_t i32() { return static_cast<std::int32_t>(u32()); }
-  std::int64_t i64() { return static_cast<std::int64_t>(u64()); }
-  double f64() { return std::bit_cast<double>(u64()); }
-  bool flag() {
-    const std::uint8_t v = u8();
-    if (v > 1) corrupted("a boolean holds a value other than 0 or 1");
-    return v == 1;
-  }
-  Vec3 vec() {
-    Vec3 v;
-    v.x() = f64(), v.y() = f64(), v.z() = f64();
-    return v;
-  }
-  Quat quat() {
-    Quat q;
-    q.x() = f64(), q.y() = f64(), q.z() = f64(), q.w() = f64();
-    return q;
-  }
-  // A count of items of at least `item_size` bytes each, checked against what is left.
-  std::size_t count(std::size_t item_size) {
-    const std::uint64_t n = u64();
-    if (item_size > 0 && n > left() / item_size) corrupted("a count is larger than the file");
-    return static_cast<std::size_t>(n);
-  }
-  [[noreturn]] void corrupted(std::string_view what) const {
-    input_error("checkpoint '{}' is corrupted ({}). Delete it and start the run again without --resume.", source_,
-                what);
-  }
-
- private:
-  const std::uint8_t* take(std::size_t n) {
-    if (n > left()) corrupted("it ends early");
-    const std::uint8_t* p = bytes_.data() + pos_;
-    pos_ += n;
-    return p;
-  }
-
-  std::span<const std::uint8_t> bytes_;
-  std::size_t pos_ = 0;
-  const std::string& source_;
-};
+Reader checkpoint_reader(std::span<const std::uint8_t> bytes, const std::string& source) {
+  return Reader(bytes, fmt::format("checkpoint '{}'", source),
+                " Delete it and start the run again without --resume.");
+}
 
 void write_pair(Writer& w, const CandidatePair& p) {
   w.i32(p.a), w.i32(p.b);
@@ -216,7 +141,7 @@ Checkpoint decode_checkpoint(std::span<const std::uint8_t> bytes, const std::str
     input_error("'{}' is not a grainlab checkpoint (its first bytes are not the checkpoint signature). "
                 "Give the checkpoint.bin of a run folder.",
                 source_name);
-  Reader header(bytes.subspan(8), source_name);
+  Reader header = checkpoint_reader(bytes.subspan(8), source_name);
   const std::uint32_t version = header.u32();
   if (version != kCheckpointVersion)
     input_error("checkpoint '{}' has format version {}, this grainlab reads version {}. Resume it with the "
@@ -235,7 +160,7 @@ Checkpoint decode_checkpoint(std::span<const std::uint8_t> bytes, const std::str
                 "--resume.",
                 source_name);
 
-  Reader r(payload, source_name);
+  Reader r = checkpoint_reader(payload, source_name);
   Checkpoint c;
   c.config_hash = r.u64();
   State& s = c.state;

@@ -29,7 +29,8 @@ struct Checkpoint {
 };
 
 // Current checkpoint format version; files of another version are refused.
-// 2: candidate pairs (warm-start caches) and contacts (a, b, sub-contact) stored apart.
+// 2: candidate pairs (warm-start caches) and contacts (a, b, sub-contact) stored apart;
+//    protocol bytes through core/bytes.h, no Model fields.
 inline constexpr std::uint32_t kCheckpointVersion = 2;
 
 // Writes a checkpoint atomically (RunError on failure).

@@ -32,7 +32,7 @@ std::optional<double> mean_grain_roundness(const Model& model) {
   return sum / static_cast<double>(model.bodies.size());
 }
 
-void add_micromechanics_summary(nlohmann::json& j, const DirectShearTest& test) {
+void add_micromechanics_summary(nlohmann::json& j, const LabTest& test) {
   if (const auto r = mean_grain_roundness(test.world().model)) j["mean_roundness"] = *r;
 
   // Peak Psi over the series (NaN rows, before a contact exists, are skipped).
@@ -46,13 +46,12 @@ void add_micromechanics_summary(nlohmann::json& j, const DirectShearTest& test) 
   }
 
   const World& w = test.world();
-  const double volume =
-      test.spec().box.length * test.spec().box.width * w.state.walls[DirectShearTest::Cap].x.z();
+  const double volume = test.specimen_volume();
   const analysis::StressTensor s = analysis::love_weber_stress(w.state, volume);
   nlohmann::json sigma = nlohmann::json::array();
   for (int i = 0; i < 3; ++i) sigma.push_back({s.sigma(i, 0), s.sigma(i, 1), s.sigma(i, 2)});
   nlohmann::json& f = j["final"];
-  f["cap_normal_stress_Pa"] = test.normal_stress();
+  f["cap_normal_stress_Pa"] = test.boundary_stress();
   f["love_weber_stress_Pa"] = std::move(sigma);
   f["love_weber_mean_Pa"] = s.mean;
   f["love_weber_deviatoric_Pa"] = s.deviatoric;

@@ -11,7 +11,7 @@
 #pragma once
 
 #include "dynamics/model.h"
-#include "lab/direct_shear.h"
+#include "lab/lab_test.h"
 
 #include <nlohmann/json.hpp>
 
@@ -28,6 +28,6 @@ std::optional<double> mean_grain_roundness(const Model& model);
 
 // Adds the entries above to a run.json object (creating "peaks" and "final"
 // if needed; existing keys there are kept).
-void add_micromechanics_summary(nlohmann::json& run_json, const DirectShearTest& test);
+void add_micromechanics_summary(nlohmann::json& run_json, const LabTest& test);
 
 }  // namespace grainlab

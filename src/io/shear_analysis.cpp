@@ -27,24 +27,24 @@ double fabric_psi(const State& s, const analysis::GrainMask* mask) {
 
 }  // namespace
 
-State shear_reference_state(const DirectShearTest& test) {
+State shear_reference_state(const LabTest& test) {
   State ref;
-  ref.bodies = test.shear_reference();
+  ref.bodies = test.reference();
   return ref;
 }
 
-BandAnalysis analyse_band(const DirectShearTest& test, const State& reference) {
+BandAnalysis analyse_band(const LabTest& test, const State& reference) {
   const State& now = test.world().state;
   BandAnalysis b;
-  // Cap height at the start of shear (before shear: now); the floor is z = 0.
-  const double cap_z0 = now.walls[DirectShearTest::Cap].x.z() - test.cap_displacement();
-  b.profile_spec.z_min = 0;
-  b.profile_spec.z_max = cap_z0;
-  b.profile_spec.layers = std::max(1, static_cast<int>(std::lround(cap_z0 / test.mean_diameter())));
-  b.profile_spec.shear_direction = Vec3::UnitX();
+  // Floor to the cap at the start of shear (before shear: now).
+  const BandGeometry g = test.band_geometry();
+  b.profile_spec.z_min = g.z_min;
+  b.profile_spec.z_max = g.z_max;
+  b.profile_spec.layers = std::max(1, static_cast<int>(std::lround(g.z_max / g.layer)));
+  b.profile_spec.shear_direction = g.direction;
   b.profile = analysis::displacement_profile(now, reference, b.profile_spec);
   analysis::BandSpec spec;
-  b.min_jump = std::max(spec.min_jump, kBandJump * test.shear_strain() * test.spec().box.length);
+  b.min_jump = std::max(spec.min_jump, kBandJump * g.strain * g.length);
   spec.min_jump = b.min_jump;
   b.band = analysis::find_shear_band(b.profile, spec);
   b.mask = analysis::grains_in_band(reference, b.band);
@@ -58,7 +58,7 @@ const std::vector<std::string>& shear_analysis_columns() {
   return columns;
 }
 
-std::vector<double> shear_analysis_values(const DirectShearTest& test) {
+std::vector<double> shear_analysis_values(const LabTest& test) {
   const State& now = test.world().state;
   const State ref = shear_reference_state(test);
   if (ref.bodies.size() != now.bodies.size())  // not shearing yet: nothing to measure from
@@ -77,8 +77,8 @@ std::vector<double> shear_analysis_values(const DirectShearTest& test) {
   };
 }
 
-void observe_shear_analysis(DirectShearTest& test) {
-  test.set_sample_observer(shear_analysis_columns(), [](const DirectShearTest& t) { return shear_analysis_values(t); });
+void observe_shear_analysis(LabTest& test) {
+  test.set_sample_observer(shear_analysis_columns(), [](const LabTest& t) { return shear_analysis_values(t); });
 }
 
 }  // namespace grainlab

@@ -1,13 +1,13 @@
 // The micromechanics of a direct shear test (paper section 5, issue 5), as
 // the run records it: the analysis columns appended to every row of
 // series.csv, and the shear band they rest on. Pure functions of the test's
-// current State and its shear reference (DirectShearTest::shear_reference(),
+// current State and its shear reference (LabTest::reference(),
 // the grains at the start of shear), built from the analysis layer.
 //
 // Shear band. The horizontal displacement since the start of shear is binned
 // by reference height into layers about one mean grain diameter thick
-// (DirectShearTest::mean_diameter()) between the floor (z = 0) and the cap at
-// the start of shear: thinner layers hold too few grains to give a mean, and
+// between the floor (z = 0) and the cap at the start of shear (the test's
+// LabTest::band_geometry()): thinner layers hold too few grains to give a mean, and
 // a fixed range keeps the binning the same at every sample. The band is
 // analysis::find_shear_band of that profile, and is only taken once the two
 // plateaus differ by at least 10 % of the box displacement d_h (before that,
@@ -28,7 +28,7 @@
 #include "analysis/grain_mask.h"
 #include "analysis/shear_band.h"
 #include "dynamics/state.h"
-#include "lab/direct_shear.h"
+#include "lab/lab_test.h"
 
 #include <string>
 #include <vector>
@@ -36,7 +36,7 @@
 namespace grainlab {
 
 // The test's shear reference as a State (bodies only); empty before shear.
-State shear_reference_state(const DirectShearTest& test);
+State shear_reference_state(const LabTest& test);
 
 // The profile and band of the test's current state (rules above).
 struct BandAnalysis {
@@ -46,16 +46,16 @@ struct BandAnalysis {
   analysis::GrainMask mask;             // grains in the band (by reference height); all 0 without a band
   double min_jump = 0;                  // m, plateau difference required for a band
 };
-BandAnalysis analyse_band(const DirectShearTest& test, const State& reference);
+BandAnalysis analyse_band(const LabTest& test, const State& reference);
 
 // The analysis columns, in order (names above).
 const std::vector<std::string>& shear_analysis_columns();
 
 // Their values for the test's current state (shear_analysis_columns() order).
-std::vector<double> shear_analysis_values(const DirectShearTest& test);
+std::vector<double> shear_analysis_values(const LabTest& test);
 
 // Sets the test's sample observer to shear_analysis_values: call before the
 // run starts (and the same on a resumed run, so that its rows match).
-void observe_shear_analysis(DirectShearTest& test);
+void observe_shear_analysis(LabTest& test);
 
 }  // namespace grainlab

@@ -19,24 +19,24 @@ SnapshotOptions snapshot_options() {
 
 }  // namespace
 
-ShearSnapshots::ShearSnapshots(const std::filesystem::path& run_folder, const DirectShearTest& test, bool resume)
+ShearSnapshots::ShearSnapshots(const std::filesystem::path& run_folder, const LabTest& test, bool resume)
     : writer_(run_folder / "paraview", snapshot_options()), interval_(test.spec().output.snapshot_interval) {
   if (resume) writer_.keep_existing_collections();
   rows_seen_ = test.series().size();
   // Every snapshot due at or before the restored state was written before it
   // was saved (snapshots are taken at samples, before the checkpoint).
-  if (rows_seen_ > 0) next_index_ = interval_ > 0 ? index_for_strain(test.shear_strain()) + 1 : 1;
+  if (rows_seen_ > 0) next_index_ = interval_ > 0 ? index_for_strain(test.progress()) + 1 : 1;
 }
 
 int ShearSnapshots::index_for_strain(double strain) const {
   return static_cast<int>(std::floor((strain + kStrainSlack) / interval_));
 }
 
-void ShearSnapshots::update(const DirectShearTest& test) {
+void ShearSnapshots::update(const LabTest& test) {
   const std::size_t rows = test.series().size();
   if (rows == rows_seen_) return;
   rows_seen_ = rows;  // advance() returns right after a sample: the state is that of the last row
-  const double strain = test.shear_strain();
+  const double strain = test.progress();
   if (rows == 1 && next_index_ == 0) {
     write(test, 0);  // the start of shear
     next_index_ = 1;
@@ -49,12 +49,12 @@ void ShearSnapshots::update(const DirectShearTest& test) {
   }
 }
 
-void ShearSnapshots::finish(const DirectShearTest& test) {
+void ShearSnapshots::finish(const LabTest& test) {
   if (test.world().state.step == last_step_) return;  // the last sample is the final state, already written
-  write(test, interval_ > 0 ? index_for_strain(test.shear_strain()) + 1 : 1);
+  write(test, interval_ > 0 ? index_for_strain(test.progress()) + 1 : 1);
 }
 
-void ShearSnapshots::write(const DirectShearTest& test, int index) {
+void ShearSnapshots::write(const LabTest& test, int index) {
   const World& w = test.world();
   const State ref = shear_reference_state(test);
   GrainFields fields = grain_fields(w.state, ref.bodies.size() == w.state.bodies.size() ? &ref : nullptr);

@@ -11,13 +11,13 @@
 // only. Times in the .pvd files are the simulated time (s).
 //
 // Grain values: displacement (m) and rotation (rad) since the start of shear
-// (DirectShearTest::shear_reference()), velocity (m/s), coordination (grain-
+// (LabTest::reference()), velocity (m/s), coordination (grain-
 // grain contacts of each grain), and in_shear_band (1 for the grains whose
 // reference centre is in the band of io/shear_analysis.h, else 0).
 #pragma once
 
 #include "io/snapshot_vtk.h"
-#include "lab/direct_shear.h"
+#include "lab/lab_test.h"
 
 #include <cstdint>
 #include <filesystem>
@@ -29,19 +29,19 @@ class ShearSnapshots {
   // Snapshots into run_folder/paraview. With `resume`, the collections keep
   // the entries an interrupted run wrote, and the schedule picks up from the
   // test's restored state.
-  ShearSnapshots(const std::filesystem::path& run_folder, const DirectShearTest& test, bool resume);
+  ShearSnapshots(const std::filesystem::path& run_folder, const LabTest& test, bool resume);
 
-  // Call after every DirectShearTest::advance(): writes a snapshot when the
+  // Call after every LabTest::advance(): writes a snapshot when the
   // test has just recorded a sample that is due (rules above).
-  void update(const DirectShearTest& test);
+  void update(const LabTest& test);
 
   // Call once the test is done: the final snapshot.
-  void finish(const DirectShearTest& test);
+  void finish(const LabTest& test);
 
   const SnapshotWriter& writer() const { return writer_; }
 
  private:
-  void write(const DirectShearTest& test, int index);
+  void write(const LabTest& test, int index);
   int index_for_strain(double strain) const;  // k such that strain >= k x interval (interval > 0)
 
   SnapshotWriter writer_;

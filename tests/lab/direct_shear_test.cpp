@@ -22,13 +22,13 @@ TEST(DirectShear, CheckpointRestoreContinuesBitForBit) {
   DirectShearTest a(spec);
   for (int i = 0; i < 4; ++i) a.advance(250);
   // Through the real checkpoint encoding, as `grainlab run --resume` does.
-  const std::vector<std::uint8_t> bytes = encode_checkpoint(a.world().state, a.save_progress(), 42);
+  const std::vector<std::uint8_t> bytes = encode_checkpoint(a.world().state, a.save(), 42);
   for (int i = 0; i < 4; ++i) a.advance(250);
 
   DirectShearTest b(spec);
   Checkpoint ck = decode_checkpoint(bytes, "in-memory");
   b.world().state = std::move(ck.state);
-  b.load_progress(ck.protocol);
+  b.load(ck.protocol);
   for (int i = 0; i < 4; ++i) b.advance(250);
 
   EXPECT_EQ(a.phase(), b.phase());

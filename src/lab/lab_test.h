@@ -1,0 +1,112 @@
+// LabTest: what io and apps see of a virtual lab test (direct shear today;
+// oedometer, triaxial next), so that they never name a concrete test.
+//
+// A test owns its World and steps it in phases (preparation, then a measured
+// loading phase). It records one series row per sample during loading, keeps
+// the grains at the start of loading as the reference of displacements and
+// rotations, summarises its results as named numbers, and saves / restores its
+// own protocol state (core/bytes.h) next to the World's State in a
+// checkpoint: restoring both continues the run bit for bit.
+//
+// Tests register by name in lab/lab_registry.cpp (one line each) and are made
+// by make_lab_test(name, spec).
+#pragma once
+
+#include "dynamics/world.h"
+#include "lab/direct_shear_spec.h"
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace grainlab {
+
+// One named result of a test: run.json writes it as json[group][key] (or
+// json[key] when group is empty).
+struct SummaryValue {
+  std::string group;  // e.g. "peaks", "final", "preparation"; "" = top level
+  std::string key;    // e.g. "friction_angle_deg"
+  double value = 0;
+};
+
+// Where io bins the grains to find a shear band: layers across `axis` (a
+// world-frame height range) of displacement along `direction`.
+struct BandGeometry {
+  double z_min = 0, z_max = 0;  // m, reference heights spanned (floor, boundary at the start of loading)
+  double layer = 0;             // m, layer thickness (about one grain diameter)
+  Vec3 direction = Vec3::UnitX();  // the imposed displacement's direction
+  double strain = 0;            // imposed shear strain since the start of loading
+  double length = 0;            // m, over which it is imposed: the displacement is strain x length
+};
+
+class LabTest {
+ public:
+  // Appends its own values to every sample row (a higher layer's analysis).
+  using SampleObserver = std::function<std::vector<double>(const LabTest&)>;
+
+  virtual ~LabTest() = default;
+
+  // The run's settings.
+  virtual const DirectShearSpec& spec() const = 0;
+  // The simulated World (read the State and Model; a restore writes the State).
+  virtual World& world() = 0;
+  virtual const World& world() const = 0;
+  // Time step of every step (s).
+  virtual double time_step() const = 0;
+
+  // Advances by up to max_steps steps; returns early at a phase change and
+  // after recording a sample. False once the test is done. Throws RunError
+  // if a phase misses its target or does not converge.
+  virtual bool advance(int max_steps) = 0;
+  // Current phase: an index that grows as the test goes on, and its name.
+  virtual int phase_index() const = 0;
+  virtual std::string phase_name() const = 0;
+  // True in the measured loading phase (samples are taken there).
+  virtual bool loading() const = 0;
+  virtual bool done() const = 0;
+  // Step at which loading began (0 before).
+  virtual std::int64_t loading_start_step() const = 0;
+  // Loading progress (direct shear: shear strain) and its final value.
+  virtual double progress() const = 0;
+  virtual double final_progress() const = 0;
+  // What progress() measures, for messages ("shear strain").
+  virtual std::string progress_label() const = 0;
+  // One progress line of current measurements (e.g. "strain 0.0100  stress ratio 0.550 ...").
+  virtual std::string status_line() const = 0;
+  // A line worth printing as the current phase begins ("" if none).
+  virtual std::string phase_note() const = 0;
+  // The final results in one sentence.
+  virtual std::string result_line() const = 0;
+
+  // Series: column names (with units; the observer's last) and rows.
+  virtual std::vector<std::string> series_columns() const = 0;
+  virtual const std::vector<std::vector<double>>& series() const = 0;
+  // Sets the sample observer (before the first sample; the same on a resumed run).
+  virtual void set_sample_observer(std::vector<std::string> columns, SampleObserver observer) = 0;
+  // The grains at the start of loading (empty before).
+  virtual const std::vector<BodyState>& reference() const = 0;
+  // Named results (run.json), valid at any time (zeros before loading).
+  virtual std::vector<SummaryValue> summary() const = 0;
+
+  // Specimen volume (m^3) and the stress the boundary holds (Pa) now.
+  virtual double specimen_volume() const = 0;
+  virtual double boundary_stress() const = 0;
+  // Shear band binning of the current state (see BandGeometry).
+  virtual BandGeometry band_geometry() const = 0;
+
+  // The protocol's own state (the World's State is saved separately).
+  virtual std::vector<std::uint8_t> save() const = 0;
+  // Restores it; call after restoring the World's State. Throws InputError if the bytes are bad.
+  virtual void load(std::span<const std::uint8_t> bytes) = 0;
+};
+
+// Makes the test registered under `name` ("direct-shear"); InputError naming
+// the registered tests if there is none.
+std::unique_ptr<LabTest> make_lab_test(const std::string& name, const DirectShearSpec& spec);
+// Names of the registered tests.
+std::vector<std::string> lab_test_names();
+
+}  // namespace grainlab

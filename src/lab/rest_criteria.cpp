@@ -1,0 +1,64 @@
+// Rest criteria (definitions in rest_criteria.h).
+#include "lab/rest_criteria.h"
+
+#include <algorithm>
+
+namespace grainlab {
+
+double contact_elastic_energy(const State& s) {
+  double elastic = 0;
+  for (const auto* list : {&s.pairs, &s.wall_pairs})
+    for (const PairContact& pc : *list)
+      if (in_contact(pc)) elastic += 0.4 * pc.normal_force * pc.geo.depth;
+  return elastic;
+}
+
+bool kinetic_small_against_elastic(const World& w) {
+  return w.kinetic_energy() < 1e-2 * contact_elastic_energy(w.state);
+}
+
+double per_mean_contact_force(const State& s, double force) {
+  double contact = 0;
+  std::size_t n_contacts = 0;
+  for (const auto* list : {&s.pairs, &s.wall_pairs})
+    for (const PairContact& pc : *list)
+      if (in_contact(pc)) contact += pc.force.norm(), ++n_contacts;
+  if (n_contacts == 0 || contact <= 0) return 1;
+  return force / (contact / n_contacts);
+}
+
+double unbalanced_force_ratio(const World& w) {
+  double resultant = 0;
+  for (const Vec3& f : w.body_forces()) resultant += f.norm();
+  return per_mean_contact_force(w.state, resultant / std::max<std::size_t>(1, w.body_forces().size()));
+}
+
+void ForceWindow::add(const std::vector<Vec3>& forces) {
+  sum_.resize(forces.size(), Vec3::Zero());
+  for (std::size_t k = 0; k < forces.size(); ++k) sum_[k] += forces[k];
+  ++steps_;
+}
+
+void ForceWindow::reset() {
+  std::fill(sum_.begin(), sum_.end(), Vec3::Zero());
+  steps_ = 0;
+}
+
+double ForceWindow::averaged_ratio(const World& w) const {
+  if (steps_ == 0 || sum_.empty()) return unbalanced_force_ratio(w);
+  double resultant = 0;
+  for (const Vec3& f : sum_) resultant += f.norm() / steps_;
+  return per_mean_contact_force(w.state, resultant / sum_.size());
+}
+
+void ForceWindow::save(ByteWriter& out) const {
+  out.i32(steps_);
+  out.vecs(sum_);
+}
+
+void ForceWindow::load(ByteReader& in) {
+  steps_ = in.i32();
+  sum_ = in.vecs();
+}
+
+}  // namespace grainlab

@@ -1,0 +1,77 @@
+// When is a specimen at rest? The measures the lab's phases test, and the
+// counting that turns single checks into "at rest".
+//
+//  * Kinetic energy small against the elastic energy stored in the contacts:
+//    E_k < 1e-2 E_el, with E_el = sum (2/5) f delta per contact (Hertz:
+//    f = K delta^{3/2}, so the work int f d(delta) = (2/5) f delta).
+//  * Unbalanced-force ratio: mean |resultant| per grain over the mean
+//    |contact force| (1 with no contacts). Averaged: each grain's resultant
+//    is first averaged over the steps of a window (ForceWindow; the direct
+//    shear's spans the current calm run, up to 1000 steps): the static
+//    imbalance, without the ringing of stiff contacts and of the packing's
+//    collective modes, which keeps the instantaneous ratio of faceted grains
+//    at 0.1-0.2 in a packing at rest.
+//  * Calm checks: a check every kCheckEvery steps; kCalmChecks consecutive
+//    calm checks mean at rest (CalmCounter).
+#pragma once
+
+#include "core/bytes.h"
+#include "dynamics/world.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace grainlab {
+
+inline constexpr int kCheckEvery = 50;  // steps between rest checks
+inline constexpr int kCalmChecks = 20;  // consecutive calm checks = at rest
+
+// Elastic energy stored in the touching contacts (J), (2/5) f delta each.
+double contact_elastic_energy(const State& s);
+// Kinetic energy below 1e-2 of the contacts' elastic energy.
+bool kinetic_small_against_elastic(const World& w);
+// force over the mean magnitude of the contact forces (1 with no contacts).
+double per_mean_contact_force(const State& s, double force);
+// Mean |resultant| per grain over the mean |contact force|, this step.
+double unbalanced_force_ratio(const World& w);
+
+// Each grain's resultant force summed over a check window.
+class ForceWindow {
+ public:
+  // Adds this step's resultants (World::body_forces()).
+  void add(const std::vector<Vec3>& forces);
+  // Starts a new window.
+  void reset();
+  // Steps summed so far.
+  int steps() const { return steps_; }
+  // The unbalanced-force ratio of the window's mean resultants (the
+  // instantaneous one if the window is empty).
+  double averaged_ratio(const World& w) const;
+  // The window's state, little-endian.
+  void save(ByteWriter& out) const;
+  void load(ByteReader& in);
+
+ private:
+  std::int32_t steps_ = 0;    // steps summed in sum_
+  std::vector<Vec3> sum_;     // N, per grain
+};
+
+// Counts consecutive calm checks.
+class CalmCounter {
+ public:
+  // Records one check; true once kCalmChecks consecutive checks were calm.
+  bool check(bool calm) {
+    count_ = calm ? count_ + 1 : 0;
+    return count_ >= kCalmChecks;
+  }
+  void reset() { count_ = 0; }
+  // Consecutive calm checks so far.
+  int count() const { return count_; }
+  void save(ByteWriter& out) const { out.i32(count_); }
+  void load(ByteReader& in) { count_ = in.i32(); }
+
+ private:
+  std::int32_t count_ = 0;
+};
+
+}  // namespace grainlab

@@ -1,0 +1,83 @@
+// A LabTest saved mid-phase (its protocol bytes through a real checkpoint,
+// with the State) and restored into a fresh test continues bit for bit:
+// in the compaction (servo active, integral non-zero, deposition overrides
+// re-derived from the phase) and in shear (series rows, reference grains).
+// Only the LabTest interface and the registry are used, as io and apps do.
+#include "io/checkpoint.h"
+#include "lab/direct_shear.h"
+#include "lab/lab_test.h"
+#include "state_compare.h"
+#include "tiny_box.h"
+
+#include <gtest/gtest.h>
+
+using namespace grainlab;
+
+namespace {
+
+// Runs `a` until `reached` holds, saves, continues both the original and a
+// restored copy by the same steps, and compares them.
+template <typename Reached>
+void save_restore_continue(const DirectShearSpec& spec, Reached reached, int steps) {
+  std::unique_ptr<LabTest> a = make_lab_test("direct-shear", spec);
+  while (!reached(*a)) ASSERT_TRUE(a->advance(7)) << "the test ended before the state to save";
+  const std::vector<std::uint8_t> bytes = encode_checkpoint(a->world().state, a->save(), 7);
+  for (int i = 0; i < steps; i += 10) a->advance(10);
+
+  std::unique_ptr<LabTest> b = make_lab_test("direct-shear", spec);
+  Checkpoint ck = decode_checkpoint(bytes, "in-memory");
+  b->world().state = std::move(ck.state);
+  b->load(ck.protocol);
+  for (int i = 0; i < steps; i += 10) b->advance(10);
+
+  EXPECT_EQ(a->phase_name(), b->phase_name());
+  EXPECT_EQ(a->world().state.step, b->world().state.step);
+  EXPECT_TRUE(testing_support::same_state_bits(a->world().state, b->world().state));
+  EXPECT_EQ(a->series(), b->series());
+  EXPECT_EQ(a->save(), b->save());  // servo integral, rest counters, window, rows
+}
+
+}  // namespace
+
+TEST(LabTestSaveRestore, MidCompactionWithTheServoActive) {
+  const DirectShearSpec spec = testing_support::tiny_box_spec();
+  save_restore_continue(
+      spec,
+      [](const LabTest& t) {
+        const auto& d = dynamic_cast<const DirectShearTest&>(t);
+        return d.phase() == ShearPhase::Compact && d.servo_integral() != 0 &&
+               d.world().state.step % kCheckEvery != 0;
+      },
+      600);
+}
+
+TEST(LabTestSaveRestore, MidShear) {
+  DirectShearSpec spec = testing_support::tiny_box_spec();
+  spec.shear.final_strain = 0.02;
+  save_restore_continue(
+      spec, [](const LabTest& t) { return t.loading() && t.series().size() >= 3; }, 600);
+}
+
+TEST(LabTestSaveRestore, RegistryMakesByNameAndRefusesUnknownNames) {
+  const DirectShearSpec spec = testing_support::tiny_box_spec();
+  EXPECT_EQ(make_lab_test("direct-shear", spec)->phase_name(), "deposit");
+  EXPECT_THROW(make_lab_test("oedometer", spec), InputError);
+  EXPECT_EQ(lab_test_names(), std::vector<std::string>{"direct-shear"});
+}
+
+TEST(LabTestSaveRestore, TruncatedProtocolBytesAreRefused) {
+  const DirectShearSpec spec = testing_support::tiny_box_spec();
+  std::unique_ptr<LabTest> a = make_lab_test("direct-shear", spec);
+  a->advance(100);
+  std::vector<std::uint8_t> bytes = a->save();
+  bytes.pop_back();
+  std::unique_ptr<LabTest> b = make_lab_test("direct-shear", spec);
+  try {
+    b->load(bytes);
+    FAIL() << "truncated bytes were accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("direct shear protocol state is corrupted (it ends early)"),
+              std::string::npos)
+        << e.what();
+  }
+}
