@@ -47,8 +47,7 @@ double DirectShearTest::achieved_relative_density() const {
 }
 
 double DirectShearTest::coordination_number() const {
-  std::size_t contacts = 0;
-  for (const PairContact& pc : world_.state.pairs) contacts += in_contact(pc);
+  const std::size_t contacts = touching_pair_count(world_.state.contacts);
   return 2.0 * contacts / std::max<std::size_t>(1, world_.model.bodies.size());
 }
 

@@ -1,28 +1,33 @@
 // Rest criteria (definitions in rest_criteria.h).
 #include "lab/rest_criteria.h"
 
+#include "dynamics/laws/registry.h"
+
 #include <algorithm>
 
 namespace grainlab {
 
-double contact_elastic_energy(const State& s) {
-  double elastic = 0;
-  for (const auto* list : {&s.pairs, &s.wall_pairs})
-    for (const PairContact& pc : *list)
-      if (in_contact(pc)) elastic += 0.4 * pc.normal_force * pc.geo.depth;
-  return elastic;
+double contact_elastic_energy(const Model& m, const State& s) {
+  // The law's energy inlined (with_law), as the contact loop of the step does.
+  return with_law(m.law, [&]<typename Law>() {
+    double elastic = 0;
+    for (const auto* list : {&s.contacts, &s.wall_contacts})
+      for (const Contact& c : *list)
+        if (in_contact(c)) elastic += Law::elastic_energy(c.normal_force, c.geo.depth);
+    return elastic;
+  });
 }
 
 bool kinetic_small_against_elastic(const World& w) {
-  return w.kinetic_energy() < 1e-2 * contact_elastic_energy(w.state);
+  return w.kinetic_energy() < 1e-2 * contact_elastic_energy(w.model, w.state);
 }
 
 double per_mean_contact_force(const State& s, double force) {
   double contact = 0;
   std::size_t n_contacts = 0;
-  for (const auto* list : {&s.pairs, &s.wall_pairs})
-    for (const PairContact& pc : *list)
-      if (in_contact(pc)) contact += pc.force.norm(), ++n_contacts;
+  for (const auto* list : {&s.contacts, &s.wall_contacts})
+    for (const Contact& c : *list)
+      if (in_contact(c)) contact += c.force.norm(), ++n_contacts;
   if (n_contacts == 0 || contact <= 0) return 1;
   return force / (contact / n_contacts);
 }

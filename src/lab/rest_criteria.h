@@ -2,8 +2,9 @@
 // counting that turns single checks into "at rest".
 //
 //  * Kinetic energy small against the elastic energy stored in the contacts:
-//    E_k < 1e-2 E_el, with E_el = sum (2/5) f delta per contact (Hertz:
-//    f = K delta^{3/2}, so the work int f d(delta) = (2/5) f delta).
+//    E_k < 1e-2 E_el, with E_el the contact law's elastic energy summed over
+//    the contacts (Hertz: f = K delta^{3/2}, so the work int f d(delta) =
+//    (2/5) f delta; Hooke: (1/2) f delta).
 //  * Unbalanced-force ratio: mean |resultant| per grain over the mean
 //    |contact force| (1 with no contacts). Averaged: each grain's resultant
 //    is first averaged over the steps of a window (ForceWindow; the direct
@@ -26,8 +27,8 @@ namespace grainlab {
 inline constexpr int kCheckEvery = 50;  // steps between rest checks
 inline constexpr int kCalmChecks = 20;  // consecutive calm checks = at rest
 
-// Elastic energy stored in the touching contacts (J), (2/5) f delta each.
-double contact_elastic_energy(const State& s);
+// Elastic energy stored in the touching contacts (J), by the model's contact law.
+double contact_elastic_energy(const Model& m, const State& s);
 // Kinetic energy below 1e-2 of the contacts' elastic energy.
 bool kinetic_small_against_elastic(const World& w);
 // force over the mean magnitude of the contact forces (1 with no contacts).

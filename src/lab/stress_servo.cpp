@@ -5,14 +5,12 @@
 
 namespace grainlab {
 
-double servo_tangent_factor(ContactLaw law) { return law == ContactLaw::Hooke ? 1.0 : 1.5; }
-
 void StressServo::control(World& w, double dt) {
   WallState& cap = w.state.walls[wall_];
   double k_cap = 0;
-  const double tangent = servo_tangent_factor(w.model.law);
-  for (const PairContact& pc : w.state.wall_pairs)
-    if (pc.a == wall_ && in_contact(pc) && pc.geo.depth > 0) k_cap += tangent * pc.normal_force / pc.geo.depth;
+  for (const Contact& c : w.state.wall_contacts)
+    if (c.a == wall_ && in_contact(c) && c.geo.depth > 0)
+      k_cap += w.model.law->tangent_stiffness(c.normal_force, c.geo.depth);
   if (k_cap <= 0) {
     cap.v.z() = -speed_limit_;  // not touching yet: come down
     integral_ = 0;

@@ -3,8 +3,9 @@
 //
 // v_z = G (e + I), e = sigma - sigma_target, I <- I + beta e each step, with
 // G = alpha A / (k_w dt), where A is the loaded area and k_w the summed
-// tangent stiffness of the wall's contacts (c f / delta per contact; c from
-// the contact law: 1.5 for Hertz (f ~ delta^{3/2}), 1 for Hooke). If the
+// tangent stiffness d f / d delta of the wall's contacts, as the contact law
+// gives it (ContactLaw::tangent_stiffness: 1.5 f / delta for Hertz, f / delta
+// for Hooke). If the
 // specimen were a spring k_w, the stress would change by -alpha (e + I) per
 // step: alpha = 0.05 removes an error in about 1/alpha steps, slowly enough
 // for the stress to cross the specimen. A purely proportional servo following
@@ -19,9 +20,6 @@
 #include "dynamics/world.h"
 
 namespace grainlab {
-
-// Tangent stiffness factor c of the contact law (k = c f / delta).
-double servo_tangent_factor(ContactLaw law);
 
 class StressServo {
  public:
