@@ -1,7 +1,8 @@
-// The micromechanics entries of run.json (scripts/report.py reads them):
+// The micromechanics entries of run.json (scripts/report.py reads them),
+// serialised from analysis/micromechanics.h:
 //   "mean_roundness"               mean Wadell roundness of the grains (each
 //                                  grain its shape's; spheres count 1)
-//   "peaks": {"fabric_psi"}        largest fabric_psi of the series
+//   "peaks": {"fabric_psi", "fabric_psi_band"}  largest values of those series
 //   "final": {"cap_normal_stress_Pa", "love_weber_stress_Pa" (3x3, compression
 //            positive), "love_weber_mean_Pa", "love_weber_deviatoric_Pa",
 //            "love_weber_asymmetry", "specimen_volume_m3"}: the Love-Weber
@@ -10,21 +11,17 @@
 //            to the stress the cap measures, for comparison.
 #pragma once
 
-#include "dynamics/model.h"
 #include "lab/direct_shear.h"
 
 #include <nlohmann/json.hpp>
 
-#include <optional>
+#include <string>
+#include <vector>
 
 namespace grainlab {
 
-// Mean Wadell roundness over the grains (geometry/shape_metrics.h on each
-// distinct shape once, weighted by the number of grains using it); nullopt
-// when a shape cannot be measured. Cost: one shape_metrics per library shape,
-// not per grain (measured on one core: 24 shapes of 500 faces, 0.03 s angular
-// to 0.08 s sub-angular), so it is computed at the end of every run.
-std::optional<double> mean_grain_roundness(const Model& model);
+// The named column of the test's series (empty if it has none).
+std::vector<double> series_column(const DirectShearTest& test, const std::string& name);
 
 // Adds the entries above to a run.json object (creating "peaks" and "final"
 // if needed; existing keys there are kept).
