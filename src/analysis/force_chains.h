@@ -3,7 +3,8 @@
 // centres, the normal force magnitude PairContact::normal_force (N; the
 // measure force_stats.h splits strong and weak chains by), and the magnitude
 // of the tangential part of the contact force, |F - (F.n) n| with n the unit
-// contact normal (N).
+// contact normal (N), and whether it is strong (normal force above the mean,
+// force_stats.h).
 #pragma once
 
 #include "core/types.h"
@@ -17,6 +18,7 @@ struct ForceSegment {
   Vec3 a = Vec3::Zero(), b = Vec3::Zero();  // centres of the two grains (m)
   double normal_force = 0;                  // N
   double tangential_force = 0;              // N
+  bool strong = false;                      // part of the strong network (force_stats.h)
 };
 
 // One segment per grain-grain contact, in State::pairs order.

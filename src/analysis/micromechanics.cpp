@@ -47,6 +47,7 @@ MicromechanicsSummary micromechanics_summary(const Model& model, const State& st
   m.peak_fabric_psi_band = series_peak(fabric_psi_band);
   m.specimen_volume = box.length * box.width * box.cap_height;
   m.love_weber = love_weber_stress(state, m.specimen_volume);
+  m.forces = force_stats(state);
   return m;
 }
 

@@ -6,10 +6,12 @@
 //    sub-angular), so it is computed at the end of every run;
 //  * the peaks of the fabric factor Psi over the recorded series (largest
 //    finite value; NaN rows, before a contact exists, are skipped);
+//  * the normal contact force statistics of the final contacts (force_stats.h);
 //  * the Love-Weber stress of the final contacts (stress.h, wall contacts
 //    included) over the specimen volume V = box length x box width x cap height.
 #pragma once
 
+#include "analysis/force_stats.h"
 #include "analysis/stress.h"
 #include "dynamics/model.h"
 #include "dynamics/state.h"
@@ -36,6 +38,7 @@ struct MicromechanicsSummary {
   std::optional<double> peak_fabric_psi, peak_fabric_psi_band;
   double specimen_volume = 0;       // m^3
   StressTensor love_weber;          // Pa, compression positive
+  ForceStats forces;                // normal contact forces (N)
 };
 
 // The summary of the final `state` of `model`, with the recorded Psi series

@@ -37,7 +37,7 @@ RoseHistogram rose_histogram(std::span<const Vec3> normals) {
   for (const Vec3& v : normals) {
     const double len = v.norm();
     if (!(len > 0)) throw std::invalid_argument("rose_histogram: a zero normal");
-    for (const Vec3 n : {Vec3(v / len), Vec3(-v / len)})
+    for (const Vec3& n : {Vec3(v / len), Vec3(-v / len)})
       h.density[bin_of(std::clamp(n.z(), -1.0, 1.0), -1, 1, n_z) * n_az + bin_of(std::atan2(n.y(), n.x()), -pi, pi, n_az)] += 1;
   }
   const double omega = 4 * pi / static_cast<double>(n_z * n_az);

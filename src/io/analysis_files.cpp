@@ -78,9 +78,10 @@ nlohmann::json band_json(const BandAnalysis& b) {
 
 std::string force_chains_csv(const std::vector<analysis::ForceSegment>& segments) {
   Table t;
-  t.columns = {"x1_m", "y1_m", "z1_m", "x2_m", "y2_m", "z2_m", "force_N", "tangential_force_N"};
+  t.columns = {"x1_m", "y1_m", "z1_m", "x2_m", "y2_m", "z2_m", "force_N", "tangential_force_N", "strong"};
   for (const analysis::ForceSegment& s : segments)
-    t.add_row({s.a.x(), s.a.y(), s.a.z(), s.b.x(), s.b.y(), s.b.z(), s.normal_force, s.tangential_force});
+    t.add_row({s.a.x(), s.a.y(), s.a.z(), s.b.x(), s.b.y(), s.b.z(), s.normal_force, s.tangential_force,
+               s.strong ? 1.0 : 0.0});
   return t.to_csv();
 }
 

@@ -16,7 +16,8 @@
 //                     all grain-grain contacts and of the contacts of the grains
 //                     in the band (fabric_json below)
 //   force_chains.csv  x1_m, y1_m, z1_m, x2_m, y2_m, z2_m, force_N,
-//                     tangential_force_N: one grain-grain contact per row, a
+//                     tangential_force_N, strong (1: normal force above the
+//                     mean, analysis/force_stats.h): one grain-grain contact per row, a
 //                     segment between the two grain centres; force_N is the
 //                     normal contact force (N), the measure analysis/force_stats.h
 //                     splits strong and weak chains by

@@ -33,6 +33,11 @@ void add_micromechanics_summary(nlohmann::json& j, const DirectShearTest& test) 
   f["love_weber_deviatoric_Pa"] = s.deviatoric;
   f["love_weber_asymmetry"] = s.asymmetry;
   f["specimen_volume_m3"] = m.specimen_volume;
+  f["contacts"] = m.forces.contacts;
+  f["contact_force_mean_N"] = m.forces.mean;
+  f["contact_force_max_N"] = m.forces.max;
+  f["contact_force_std_N"] = m.forces.std_dev;
+  f["strong_contact_fraction"] = m.forces.strong_fraction;
 }
 
 }  // namespace grainlab

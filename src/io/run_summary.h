@@ -5,10 +5,13 @@
 //   "peaks": {"fabric_psi", "fabric_psi_band"}  largest values of those series
 //   "final": {"cap_normal_stress_Pa", "love_weber_stress_Pa" (3x3, compression
 //            positive), "love_weber_mean_Pa", "love_weber_deviatoric_Pa",
-//            "love_weber_asymmetry", "specimen_volume_m3"}: the Love-Weber
+//            "love_weber_asymmetry", "specimen_volume_m3", "contacts",
+//            "contact_force_mean_N", "contact_force_max_N",
+//            "contact_force_std_N", "strong_contact_fraction"}: the Love-Weber
 //            stress of the final contacts (analysis/stress.h, wall contacts
 //            included) over the specimen volume = box area x cap height, next
-//            to the stress the cap measures, for comparison.
+//            to the stress the cap measures, for comparison; and the
+//            normal contact force statistics (analysis/force_stats.h).
 #pragma once
 
 #include "lab/direct_shear.h"

@@ -65,3 +65,23 @@ TEST(ForceSegments, CentresNormalAndTangentialForce) {
   EXPECT_EQ(seg[0].normal_force, 3.0);
   EXPECT_DOUBLE_EQ(seg[0].tangential_force, 4.0);
 }
+
+TEST(ForceSegments, StrongAboveTheMeanNormalForce) {
+  State s;
+  s.bodies.resize(4);
+  std::vector<PairContact> pairs(3);
+  const double forces[] = {1, 5, 2};  // mean 8/3: only the 5 N contact is strong
+  for (int k = 0; k < 3; ++k) {
+    pairs[k].a = k, pairs[k].b = k + 1;
+    pairs[k].geo.touching = true;
+    pairs[k].geo.normal = Vec3::UnitX();
+    pairs[k].normal_force = forces[k];
+    pairs[k].force = Vec3(forces[k], 0, 0);
+  }
+  s.pairs = pairs;
+  const std::vector<ForceSegment> seg = force_segments(s);
+  ASSERT_EQ(seg.size(), 3u);
+  EXPECT_FALSE(seg[0].strong);
+  EXPECT_TRUE(seg[1].strong);
+  EXPECT_FALSE(seg[2].strong);
+}
