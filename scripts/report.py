@@ -39,7 +39,9 @@ Required (the script stops with a one-line message and exit status 1 without the
                {"friction_angle_deg", "strain_at_peak_friction", "stress_ratio",
                "dilation_angle_deg", "strain_at_peak_dilation", "fabric_psi",
                "fabric_psi_band" (both optional)}, "final": {"friction_angle_deg", "dilation_angle_deg",
-               "void_ratio"}, "timings": {"wall_s", "steps", "simulated_s"}}
+               "void_ratio", "contact_force_mean_N" (optional: the mean normal contact
+               force, where strong force chains begin)}, "timings": {"wall_s", "steps",
+               "simulated_s"}}
 
 Optional (a figure whose input is missing is replaced by a visible
 "not available: FILE missing" note):
@@ -57,8 +59,9 @@ Optional (a figure whose input is missing is replaced by a visible
                              {"theta_rad", "phi_rad", "density_per_sr" (n_theta x n_phi)}:
                              Kanatani's density sampled on that grid (theta from +z,
                              phi the azimuth from +x)
-  analysis/force_chains.csv  x1_m, y1_m, z1_m, x2_m, y2_m, z2_m, force_N: one
-                             grain-grain contact per row, between grain centres
+  analysis/force_chains.csv  x1_m, y1_m, z1_m, x2_m, y2_m, z2_m, force_N, strong: one
+                             grain-grain contact per row, between grain centres; strong
+                             is 1 for a normal force above the mean (a strong chain)
   analysis/derived.csv       shear_strain, dilation_angle_deg: the engine's dilation
                              angle (Eq. 19) at every sample of series.csv
 
