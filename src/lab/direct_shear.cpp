@@ -218,7 +218,6 @@ bool DirectShearTest::at_rest(bool strict) const {
   const double sigma = spec_.consolidation.normal_stress;
   const double tolerance = strict ? spec_.consolidation.tolerance : std::max(spec_.consolidation.tolerance, 0.05);
   if (std::abs(normal_stress() / sigma - 1) > tolerance) return false;
-  if (strict && averaged_unbalanced_force_ratio() > spec_.consolidation.max_unbalanced) return false;
   // Kinetic energy small against the elastic energy stored in the contacts
   // (Hertz: (2/5) f delta per contact).
   double elastic = 0;
@@ -261,16 +260,28 @@ bool DirectShearTest::advance(int max_steps) {
                           ? world_.kinetic_energy() < 1e-3 * lift * world_.model.bodies.size()
                           : at_rest(p == ShearPhase::Consolidate);
     progress_.calm_checks = calm ? progress_.calm_checks + 1 : 0;
+    // The consolidation also needs the static balance: each grain's resultant
+    // averaged over the whole calm run (kCalmChecks x kCheckEvery steps). The
+    // window spans the run rather than one check interval because the packing
+    // rings in collective modes longer than 50 steps: in the tiny test box the
+    // ratio averaged over 50 steps swings up to 0.014 while over 1000 steps
+    // it is 0.0008.
     const double averaged_unbalanced = averaged_unbalanced_force_ratio();
-    std::fill(sum.begin(), sum.end(), Vec3::Zero());
-    progress_.window_steps = 0;
+    const int window = progress_.window_steps;
+    if (progress_.calm_checks >= kCalmChecks && p == ShearPhase::Consolidate &&
+        averaged_unbalanced > spec_.consolidation.max_unbalanced)
+      progress_.calm_checks = 0;
+    if (progress_.calm_checks == 0 || progress_.calm_checks >= kCalmChecks) {
+      std::fill(sum.begin(), sum.end(), Vec3::Zero());
+      progress_.window_steps = 0;
+    }
     if (progress_.calm_checks < kCalmChecks) {
       if (in_phase > 400000)
         throw RunError(fmt::format(
             "the {} phase did not come to rest in {} steps (normal stress {:.4g} Pa, unbalanced force "
             "ratio {:.3g} averaged over {} steps, kinetic energy {:.3g} J): try a smaller time step, more "
             "damping (lower restitution) or a larger consolidation.max_unbalanced",
-            shear_phase_name(p), in_phase, normal_stress(), averaged_unbalanced, kCheckEvery,
+            shear_phase_name(p), in_phase, normal_stress(), averaged_unbalanced, window,
             world_.kinetic_energy()));
       continue;
     }

@@ -96,10 +96,11 @@ class DirectShearTest {
   double void_ratio() const;
   double coordination_number() const;
   double unbalanced_force_ratio() const;
-  // The same with each grain's resultant averaged over the steps since the
-  // last rest check (50 steps): the static imbalance, without the ringing of
-  // stiff contacts, which keeps the instantaneous ratio of faceted grains at
-  // 0.1-0.2 in a packing at rest. The consolidation's rest test uses it.
+  // The same with each grain's resultant averaged over the current calm run
+  // (up to 1000 steps): the static imbalance, without the ringing of stiff
+  // contacts and of the packing's collective modes, which keeps the
+  // instantaneous ratio of faceted grains at 0.1-0.2 in a packing at rest.
+  // The consolidation's rest test uses it.
   double averaged_unbalanced_force_ratio() const;
   double inertial_number() const;
   double cap_displacement() const;  // m, since the start of shear (up is positive)
@@ -142,7 +143,7 @@ class DirectShearTest {
     double next_sample_strain = 0;
     double servo_integral = 0;          // Pa, the servo's integral term
     std::int32_t window_steps = 0;      // steps summed in force_sum
-    std::vector<Vec3> force_sum;        // N, per grain, since the last rest check
+    std::vector<Vec3> force_sum;        // N, per grain, over the current calm run
     std::array<std::int64_t, 5> phase_start_step{};
     std::vector<std::vector<double>> rows;
     std::vector<BodyState> reference;  // grains at the start of shear

@@ -64,7 +64,7 @@ struct ConsolidationSpec {
   double normal_stress = 100e3;     // Pa
   double tolerance = 0.01;          // relative stress error accepted
   double max_unbalanced = 0.01;     // unbalanced-force ratio accepted at rest (each grain's resultant
-                                    // averaged over 50 steps; with the kinetic energy)
+                                    // averaged over the 1000 calm steps; with the kinetic energy)
 };
 
 struct ShearSpec {
