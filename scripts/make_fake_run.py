@@ -11,8 +11,10 @@ Writes exactly the files of the run-folder contract that report.py reads
     OUT_DIR/run.json                   config, preparation, peaks, final, timings
     OUT_DIR/analysis/profile.csv       z_m, displacement_x_m, count
     OUT_DIR/analysis/band.json         low_m, high_m, method
-    OUT_DIR/analysis/fabric.json       phi, D2, D4, principal_values, psi, normals (all, band)
-    OUT_DIR/analysis/force_chains.csv  x1_m .. z2_m, force_N
+    OUT_DIR/analysis/fabric.json       contacts, phi, D2, D4, principal_values, psi, normals,
+                                       rose, kanatani_grid (all, band)
+    OUT_DIR/analysis/force_chains.csv  x1_m .. z2_m, force_N, strong
+    OUT_DIR/analysis/derived.csv       shear_strain, dilation_angle_deg
 
 Nothing here is simulated. The curves are synthetic but shaped like the
 paper's (He, Zheng & Schaefer 2021, Figs. 10-17): the stress ratio rises to a
@@ -22,7 +24,10 @@ stronger and dilate more than round ones. Grain centres are placed at random
 probability that favours the compression diagonal of the shear, so that the
 contact normals and the strong forces are anisotropic as in Figs. 15 and 17.
 The fabric tensors in fabric.json are computed from those normals with
-Kanatani's coefficients (D_ij = 15/2 dev phi_ij, D_ijkl = 315/8 (...)).
+Kanatani's coefficients (D_ij = 15/2 dev phi_ij, D_ijkl = 315/8 (...)), and
+the rose histogram and Kanatani grid as src/analysis/rose.h defines them:
+this script stands in for the engine, which computes every number the report
+shows.
 
 Coordinates are in the engine's world frame: x along the shear (box centred
 on x = 0), y across, z up from the box floor; the shear plane is at z = H/2.
@@ -82,12 +87,38 @@ def psi_of(phi2):
     return p, math.sqrt(((p[0] - p[1]) ** 2 + (p[0] - p[2]) ** 2 + (p[1] - p[2]) ** 2) / 2)
 
 
+def rose_histogram(normals):
+    """Equal-solid-angle bins (uniform in n_z and azimuth) of n and -n; density in 1/sr (rose.h)."""
+    both = np.vstack([normals, -normals])
+    n_z = int(np.clip(math.floor(math.sqrt(len(both) / 50) + 0.5), 5, 18))
+    n_az = 2 * n_z
+    z_edges = np.linspace(-1, 1, n_z + 1)
+    az_edges = np.linspace(-math.pi, math.pi, n_az + 1)
+    counts, _, _ = np.histogram2d(np.clip(both[:, 2], -1, 1), np.arctan2(both[:, 1], both[:, 0]),
+                                  bins=[z_edges, az_edges])
+    omega = 4 * math.pi / (n_z * n_az)
+    return {"z_edges": z_edges.tolist(), "azimuth_edges_rad": az_edges.tolist(),
+            "density_per_sr": (counts / len(both) / omega).tolist()}
+
+
+def kanatani_grid(d2, d4, n_theta=31, n_phi=61):
+    """f(n) = (1 / 4 pi)(1 + D2 n n + D4 n n n n) on the (theta, phi) grid of rose.h."""
+    th = np.linspace(0, math.pi, n_theta)
+    ph = np.linspace(-math.pi, math.pi, n_phi)
+    T, P = np.meshgrid(th, ph, indexing="ij")
+    n = np.stack([np.sin(T) * np.cos(P), np.sin(T) * np.sin(P), np.cos(T)], axis=-1)
+    q2 = np.einsum("ij,...i,...j->...", d2, n, n)
+    q4 = np.einsum("ijkl,...i,...j,...k,...l->...", d4, n, n, n, n, optimize=True)
+    return {"theta_rad": th.tolist(), "phi_rad": ph.tolist(), "density_per_sr": ((1 + q2 + q4) / (4 * math.pi)).tolist()}
+
+
 def fabric_entry(normals):
     phi2, d2, d4 = kanatani(normals)
     p, psi = psi_of(phi2)
-    return {"phi": phi2.tolist(), "D2": d2.tolist(), "D4": d4.tolist(),
+    return {"contacts": len(normals), "phi": phi2.tolist(), "D2": d2.tolist(), "D4": d4.tolist(),
             "principal_values": p.tolist(), "psi": psi,
-            "normals": [[round(float(c), 6) for c in v] for v in normals]}
+            "normals": [[round(float(c), 6) for c in v] for v in normals],
+            "rose": rose_histogram(np.asarray(normals, float)), "kanatani_grid": kanatani_grid(d2, d4)}
 
 
 def place_grains(rng, count):
@@ -264,6 +295,11 @@ def main(argv=None):
         del run["mean_roundness"]
     if not a.no_analysis:
         run["peaks"]["fabric_psi"] = float(np.nanmax(data[cols.index("fabric_psi")]))
+        run["peaks"]["fabric_psi_band"] = float(np.nanmax(data[cols.index("fabric_psi_band")]))
+        run["final"].update({"contacts": int(len(force)), "contact_force_mean_N": float(force.mean()),
+                             "contact_force_max_N": float(force.max()),
+                             "contact_force_std_N": float(force.std()),
+                             "strong_contact_fraction": float(np.mean(force > force.mean()))})
     (out / "run.json").write_text(json.dumps(run, indent=2) + "\n")
 
     if a.no_analysis:
@@ -284,8 +320,9 @@ def main(argv=None):
          "method": "synthetic: fake run (layers whose displacement is between 10 % and 90 % of the box's)"},
         indent=2) + "\n")
     (an / "fabric.json").write_text(json.dumps({"all": fab_all, "band": fab_band}) + "\n")
-    write_csv(an / "force_chains.csv", ["x1_m", "y1_m", "z1_m", "x2_m", "y2_m", "z2_m", "force_N"],
-              np.column_stack([centres[i], centres[j], force]))
+    write_csv(an / "force_chains.csv", ["x1_m", "y1_m", "z1_m", "x2_m", "y2_m", "z2_m", "force_N", "strong"],
+              np.column_stack([centres[i], centres[j], force, (force > force.mean()).astype(float)]))
+    write_csv(an / "derived.csv", ["shear_strain", "dilation_angle_deg"], np.column_stack([eps, dil]))
     return 0
 
 

@@ -37,9 +37,11 @@ Required (the script stops with a one-line message and exit status 1 without the
                "mean_roundness" (optional), "preparation": {"void_ratio",
                "relative_density", "target_void_ratio"}, "peaks":
                {"friction_angle_deg", "strain_at_peak_friction", "stress_ratio",
-               "dilation_angle_deg", "strain_at_peak_dilation", "fabric_psi"
-               (optional)}, "final": {"friction_angle_deg", "dilation_angle_deg",
-               "void_ratio"}, "timings": {"wall_s", "steps", "simulated_s"}}
+               "dilation_angle_deg", "strain_at_peak_dilation", "fabric_psi",
+               "fabric_psi_band" (both optional)}, "final": {"friction_angle_deg", "dilation_angle_deg",
+               "void_ratio", "contact_force_mean_N" (optional: the mean normal contact
+               force, where strong force chains begin)}, "timings": {"wall_s", "steps",
+               "simulated_s"}}
 
 Optional (a figure whose input is missing is replaced by a visible
 "not available: FILE missing" note):
@@ -47,11 +49,21 @@ Optional (a figure whose input is missing is replaced by a visible
   analysis/profile.csv       z_m, displacement_x_m, count: final mean horizontal
                              grain displacement since the start of shear per layer
   analysis/band.json         {"low_m", "high_m", "method"}: the final shear band
-  analysis/fabric.json       {"all": {...}, "band": {...}}, each with "phi" (3x3),
-                             "D2" (3x3), "D4" (3x3x3x3), "principal_values" (3),
-                             "psi", "normals" ([[nx, ny, nz], ...], one per contact)
-  analysis/force_chains.csv  x1_m, y1_m, z1_m, x2_m, y2_m, z2_m, force_N: one
-                             grain-grain contact per row, between grain centres
+  analysis/fabric.json       {"all": {...}, "band": {...}}, each with "contacts",
+                             "phi" (3x3), "D2" (3x3), "D4" (3x3x3x3),
+                             "principal_values" (3), "psi", "normals" ([[nx, ny, nz],
+                             ...]), "rose": {"z_edges", "azimuth_edges_rad",
+                             "density_per_sr" (n_z x n_az)}: the rose histogram of the
+                             normals (each counted as n and -n, bins uniform in n_z and
+                             azimuth, so of equal solid angle), and "kanatani_grid":
+                             {"theta_rad", "phi_rad", "density_per_sr" (n_theta x n_phi)}:
+                             Kanatani's density sampled on that grid (theta from +z,
+                             phi the azimuth from +x)
+  analysis/force_chains.csv  x1_m, y1_m, z1_m, x2_m, y2_m, z2_m, force_N, strong: one
+                             grain-grain contact per row, between grain centres; strong
+                             is 1 for a normal force above the mean (a strong chain)
+  analysis/derived.csv       shear_strain, dilation_angle_deg: the engine's dilation
+                             angle (Eq. 19) at every sample of series.csv
 
 Frames and conventions the figures assume: x is the shear direction, z is up;
 heights (profile z_m, band_low_m/high_m, band.json, force-chain z) are in the
@@ -59,8 +71,11 @@ engine's world frame with the box floor at z = 0, so the shear plane (middle
 of the gap) is at z = box.height / 2; the report plots heights relative to it,
 as the paper does (Fig. 11). Kanatani's density is
 f(n) = (1 / 4 pi) (1 + D2_ij n_i n_j + D4_ijkl n_i n_j n_k n_l), in 1/sr,
-integrating to one over the sphere; the report recomputes it from the normals
-and warns in the page when the D2/D4 given disagree.
+integrating to one over the sphere.
+
+The report derives no number: every value it prints or plots is read from
+these files (the engine computes them: src/analysis/); it only picks values
+(a peak's row), converts units for display and draws.
 
 Figures of one run: stress ratio F/N (Fig. 10a), cap vertical displacement
 (Fig. 10b), horizontal displacement against height with the band (Fig. 11),
@@ -213,34 +228,37 @@ class Run:
         h = num(get(self.info, "config", "box", "height"))
         return None if h is None else 0.5 * h
 
-    # Peak values: from run.json, else computed from the series.
+    # Peak values: from run.json, else picked from the engine's series.
     def peak_friction(self):
         v, e = num(get(self.info, "peaks", "friction_angle_deg")), num(get(self.info, "peaks", "strain_at_peak_friction"))
         if v is None:
-            phi = self.col("friction_angle_deg")
-            if phi is None and self.col("stress_ratio") is not None:
-                phi = np.degrees(np.arctan(self.series["stress_ratio"]))
-            if phi is not None:
-                k = int(np.nanargmax(phi))
-                v, e = float(phi[k]), float(self.series["shear_strain"][k])
+            v, e = pick_peak(self.col("friction_angle_deg"), self.series["shear_strain"])
         return v, e
 
     def peak_dilation(self):
         v, e = num(get(self.info, "peaks", "dilation_angle_deg")), num(get(self.info, "peaks", "strain_at_peak_dilation"))
         if v is None:
-            psi = dilation_angle(self)
-            if psi is not None and np.any(np.isfinite(psi)):
-                k = int(np.nanargmax(psi))
-                v, e = float(psi[k]), float(self.series["shear_strain"][k])
+            d = self.derived()
+            if d is not None:
+                v, e = pick_peak(d.get("dilation_angle_deg"), d.get("shear_strain"))
         return v, e
 
     def peak_psi(self, band=False):
-        if not band:
-            v = num(get(self.info, "peaks", "fabric_psi"))
-            if v is not None:
-                return v
+        v = num(get(self.info, "peaks", "fabric_psi_band" if band else "fabric_psi"))
+        if v is not None:
+            return v
         c = self.col("fabric_psi_band" if band else "fabric_psi")
         return None if c is None else float(np.nanmax(c))
+
+    def derived(self):
+        """analysis/derived.csv (the engine's per-sample derived series) as columns, or None."""
+        p = self.path("analysis/derived.csv")
+        if not p.is_file():
+            return None
+        try:
+            return read_csv_columns(p)
+        except (OSError, ValueError, csv.Error):
+            return None
 
     def band(self):
         """(low_m, high_m, method, source) of the final shear band, or None."""
@@ -262,19 +280,12 @@ class Run:
         return None
 
 
-def dilation_angle(run):
-    """psi = atan(d d_v / d d_h) by central differences over +-2 samples (Eq. 19), deg."""
-    dh, dv = run.col("horizontal_displacement_m"), run.col("vertical_displacement_m")
-    if dh is None or dv is None:
-        return None
-    n = len(dh)
-    out = np.full(n, np.nan)
-    for k in range(n):
-        lo, hi = max(0, k - 2), min(n - 1, k + 2)
-        d = dh[hi] - dh[lo]
-        if d > 0:
-            out[k] = math.degrees(math.atan((dv[hi] - dv[lo]) / d))
-    return out
+def pick_peak(values, strain):
+    """(largest finite value, the strain at it), or (None, None)."""
+    if values is None or strain is None or not np.any(np.isfinite(values)):
+        return None, None
+    k = int(np.nanargmax(values))
+    return float(values[k]), float(strain[k])
 
 
 # ---------------------------------------------------------------------------
@@ -359,12 +370,12 @@ def fig_stress_ratio(run, out_dir):
 
 
 def fig_vertical_displacement(run, out_dir):
-    """Fig. 10b: cap vertical displacement (mm, up = dilation) against shear strain."""
+    """Fig. 10b: cap vertical displacement (mm, up = dilation) and the engine's dilation angle against strain."""
     f = Figure("Cap vertical displacement against shear strain", "Fig. 10b",
                "Vertical displacement of the top cap since the start of shear, d<sub>v</sub>, in mm; up "
-               "(dilation) is positive, down (contraction) negative. The peak dilation angle "
-               "&psi;<sub>p</sub> = max atan(&Delta;d<sub>v</sub>/&Delta;d<sub>h</sub>) (Eq. 19) is given "
-               "in the legend.")
+               "(dilation) is positive, down (contraction) negative. Dashed, right axis: the dilation angle "
+               "&psi; = atan(&Delta;d<sub>v</sub>/&Delta;d<sub>h</sub>) (Eq. 19) the engine computed "
+               "(analysis/derived.csv); its peak &psi;<sub>p</sub> (run.json) is given in the legend.")
     dv = run.col("vertical_displacement_m")
     if dv is None:
         return f.missing("series.csv column vertical_displacement_m")
@@ -373,15 +384,25 @@ def fig_vertical_displacement(run, out_dir):
     label = "cap displacement"
     if psi_p is not None and e_p is not None:
         label += f" ($\\psi_p$ = {psi_p:.1f}° at $\\varepsilon_s$ = {100 * e_p:.1f} %)"
-    ax.plot(run.strain_pct, 1e3 * dv, color=ALL_COLOR, lw=1.6, label=label)
+    lines = ax.plot(run.strain_pct, 1e3 * dv, color=ALL_COLOR, lw=1.6, label=label)
     if psi_p is not None and e_p is not None:
         k = int(np.argmin(np.abs(run.series["shear_strain"] - e_p)))
-        ax.plot([run.strain_pct[k]], [1e3 * dv[k]], "o", color=BAND_COLOR, zorder=5,
-                label="steepest dilation")
+        lines += ax.plot([run.strain_pct[k]], [1e3 * dv[k]], "o", color=BAND_COLOR, zorder=5,
+                         label="steepest dilation")
     ax.axhline(0, color="0.3", lw=0.8)
     pct_axis(ax)
     ax.set_ylabel("cap vertical displacement $d_v$ (mm), up = dilation")
-    ax.legend(loc="lower right")
+    d = run.derived()
+    psi = None if d is None else d.get("dilation_angle_deg")
+    if psi is None or "shear_strain" not in d or not np.any(np.isfinite(psi)):
+        f.missing("analysis/derived.csv column dilation_angle_deg", "no dilation angle curve")
+    else:
+        ax2 = ax.twinx()
+        lines += ax2.plot(100 * d["shear_strain"], psi, color=BAND_COLOR, lw=1.0, ls="--", alpha=0.8,
+                          label="dilation angle $\\psi$ (right axis)")
+        ax2.set_ylabel("dilation angle $\\psi$ (deg)")
+        ax2.grid(False)
+    ax.legend(lines, [ln.get_label() for ln in lines], loc="lower right")
     ax.set_title("Cap vertical displacement")
     return f.save(fig, out_dir, "vertical_displacement.png")
 
@@ -464,47 +485,6 @@ def fig_fabric_psi(run, out_dir):
 
 # -- Fig. 15: rose diagrams -------------------------------------------------
 
-def kanatani_tensors(normals):
-    """D2, D4 from unit normals with Kanatani's coefficients (15/2 and 315/8; Eqs. 24-28)."""
-    n = normals
-    phi2 = n.T @ n / len(n)
-    phi4 = np.einsum("ai,aj,ak,al->ijkl", n, n, n, n, optimize=True) / len(n)
-    d = np.eye(3)
-    perms = ["ij,kl->ijkl", "ik,jl->ijkl", "il,jk->ijkl", "jk,il->ijkl", "jl,ik->ijkl", "kl,ij->ijkl"]
-    sym_dphi = sum(np.einsum(p, d, phi2) for p in perms) / 6
-    sym_dd = sum(np.einsum(p, d, d) for p in perms[:3]) / 3
-    return 7.5 * (phi2 - d / 3), 315 / 8 * (phi4 - 6 / 7 * sym_dphi + 3 / 35 * sym_dd)
-
-
-def kanatani_density(d2, d4, n):
-    """f(n) = (1 / 4 pi)(1 + D2_ij n_i n_j + D4_ijkl n_i n_j n_k n_l) for unit vectors n[..., 3]."""
-    q2 = np.einsum("ij,...i,...j->...", d2, n, n)
-    q4 = np.einsum("ijkl,...i,...j,...k,...l->...", d4, n, n, n, n, optimize=True)
-    return (1 + q2 + q4) / (4 * math.pi)
-
-
-def sphere_grid(n_theta=31, n_phi=61):
-    th = np.linspace(0, math.pi, n_theta)
-    ph = np.linspace(-math.pi, math.pi, n_phi)
-    T, P = np.meshgrid(th, ph, indexing="ij")
-    return T, P, np.stack([np.sin(T) * np.cos(P), np.sin(T) * np.sin(P), np.cos(T)], axis=-1)
-
-
-def rose_histogram(normals):
-    """Equal-solid-angle bins (uniform in n_z and azimuth) of n and -n; density in 1/sr.
-
-    About 25 normals per bin on average (at least 5 x 10 bins), so the bars are not noise."""
-    both = np.vstack([normals, -normals])
-    n_z = int(np.clip(round(math.sqrt(len(both) / 25 / 2)), 5, 18))
-    n_az = 2 * n_z
-    z_edges = np.linspace(-1, 1, n_z + 1)
-    az_edges = np.linspace(-math.pi, math.pi, n_az + 1)
-    counts, _, _ = np.histogram2d(np.clip(both[:, 2], -1, 1), np.arctan2(both[:, 1], both[:, 0]),
-                                  bins=[z_edges, az_edges])
-    omega = 4 * math.pi / (n_z * n_az)
-    return counts / len(both) / omega, z_edges, az_edges
-
-
 def rose_surface(density, z_edges, az_edges):
     """The 3D rose as a closed surface r(theta, phi) = bin frequency: one vertex at the centre of
     every bin at radius = its density (plus the two poles, at the mean of the polar bins), joined
@@ -539,12 +519,6 @@ def load_fabric(run, f):
     return fab
 
 
-def octahedral_psi(values):
-    """Psi of Eq. 29 from three principal values."""
-    a, b, c = values
-    return math.sqrt(((a - b) ** 2 + (a - c) ** 2 + (b - c) ** 2) / 2)
-
-
 def as_array(x, shape):
     """x as a float array of the given shape, or None when it is missing or malformed."""
     try:
@@ -555,58 +529,32 @@ def as_array(x, shape):
 
 
 def fabric_set(entry, which, f):
-    """Normals, D2/D4, Psi and principal values of one set ('all' or 'band') of fabric.json,
-    checked against each other (warnings in f); None with a note when nothing can be drawn."""
-    normals = None
-    if entry.get("normals"):
-        normals = as_array(entry["normals"], (-1, 3))
-        if normals is None:
-            f.warnings.append(f"fabric.json '{which}': normals are not a list of finite 3-vectors; ignored")
-        else:
-            length = np.linalg.norm(normals, axis=1)
-            normals = normals[length > 0] / length[length > 0, None]
-            normals = normals if len(normals) else None
-    d2, d4 = as_array(entry.get("D2"), (3, 3)), as_array(entry.get("D4"), (3, 3, 3, 3))
-    phi = as_array(entry.get("phi"), (3, 3))
-    if normals is not None:
-        own2, own4 = kanatani_tensors(normals)
-        own_phi = normals.T @ normals / len(normals)
-        if d2 is None or d4 is None:
-            f.notes.append(f"fabric.json '{which}': D2/D4 missing or malformed; Kanatani's density computed "
-                           "here from the normals")
-            d2, d4 = own2, own4
-        else:
-            _, _, grid = sphere_grid(19, 37)
-            diff = 4 * math.pi * np.max(np.abs(kanatani_density(d2, d4, grid) - kanatani_density(own2, own4, grid)))
-            if diff > 0.05:
-                f.warnings.append(
-                    f"fabric.json '{which}': the D2/D4 given disagree with the normals (Kanatani densities "
-                    f"differ by up to {100 * diff:.0f} % of the isotropic 1/4&pi;). Kanatani's coefficients are "
-                    "D<sub>ij</sub> = 15/2 (&phi;<sub>ij</sub> &minus; &delta;<sub>ij</sub>/3) and "
-                    "D<sub>ijkl</sub> = 315/8 (...); the paper's Eqs. 24-25 print 2/15. The surface drawn is the "
-                    "one given.")
-        if phi is None:
-            phi = own_phi
-        elif np.max(np.abs(phi - own_phi)) > 0.01:
-            f.warnings.append(f"fabric.json '{which}': phi differs from the mean of n n over the normals by up to "
-                              f"{np.max(np.abs(phi - own_phi)):.3f}")
-    if d2 is None or d4 is None:
-        f.missing(f"analysis/fabric.json '{which}' normals and D2/D4")
+    """The rose histogram, Kanatani grid, Psi and principal values of one set ('all' or 'band') of
+    fabric.json, as the engine wrote them; None with a note when nothing can be drawn."""
+    contacts = entry.get("contacts")
+    if contacts == 0:
+        f.notes.append(f"fabric.json '{which}': no contacts" + (f" ({entry['note']})" if entry.get("note") else ""))
         return None
-    if normals is None:
-        f.notes.append(f"fabric.json '{which}': no normals, only Kanatani's density is drawn")
-    principal = None if phi is None else np.sort(np.linalg.eigvalsh(phi))[::-1]
-    psi = num(entry.get("psi"))
-    if principal is not None:
-        own = octahedral_psi(principal)
-        if psi is None:
-            psi = own
-        elif abs(psi - own) > 1e-3 + 1e-2 * own:
-            f.warnings.append(f"fabric.json '{which}': psi = {psi:.4f} but Eq. 29 on the principal values of "
-                              f"phi gives {own:.4f}")
-    elif as_array(entry.get("principal_values"), (3,)) is not None:
-        principal = as_array(entry["principal_values"], (3,))
-    return {"normals": normals, "D2": d2, "D4": d4, "psi": psi, "principal_values": principal}
+    grid = entry.get("kanatani_grid") if isinstance(entry.get("kanatani_grid"), dict) else {}
+    th, ph = as_array(grid.get("theta_rad"), (-1,)), as_array(grid.get("phi_rad"), (-1,))
+    fk = None
+    if th is not None and ph is not None:
+        fk = as_array(grid.get("density_per_sr"), (len(th), len(ph)))
+    if fk is None:
+        f.missing(f"analysis/fabric.json '{which}' kanatani_grid")
+        return None
+    rose = entry.get("rose") if isinstance(entry.get("rose"), dict) else {}
+    ze, ae = as_array(rose.get("z_edges"), (-1,)), as_array(rose.get("azimuth_edges_rad"), (-1,))
+    hist = None
+    if ze is not None and ae is not None and len(ze) > 1 and len(ae) > 1:
+        dens = as_array(rose.get("density_per_sr"), (len(ze) - 1, len(ae) - 1))
+        hist = None if dens is None else (dens, ze, ae)
+    if hist is None:
+        f.notes.append(f"fabric.json '{which}': no rose histogram, only Kanatani's density is drawn")
+    T, P = np.meshgrid(th, ph, indexing="ij")
+    unit = np.stack([np.sin(T) * np.cos(P), np.sin(T) * np.sin(P), np.cos(T)], axis=-1)
+    return {"contacts": num(contacts), "unit": unit, "kanatani": fk, "hist": hist, "psi": num(entry.get("psi")),
+            "principal_values": as_array(entry.get("principal_values"), (3,))}
 
 
 def fig_rose(run, out_dir):
@@ -617,7 +565,7 @@ def fig_rose(run, out_dir):
                "bin's frequency per steradian, coloured by it. The black wireframe is Kanatani's fourth-order "
                "density f(n) = (1 + D<sub>ij</sub>n<sub>i</sub>n<sub>j</sub> + "
                "D<sub>ijkl</sub>n<sub>i</sub>n<sub>j</sub>n<sub>k</sub>n<sub>l</sub>)/4&pi; (Eqs. 23-28) of the "
-               "same normals. An isotropic fabric is a sphere of radius 1/4&pi; = 0.080 sr<sup>&minus;1</sup>. "
+               "same normals; both as the engine computed them (analysis/fabric.json). An isotropic fabric is a sphere of radius 1/4&pi; = 0.080 sr<sup>&minus;1</sup>. "
                "x is the shear direction, z is up.")
     fab = load_fabric(run, f)
     if fab is None:
@@ -632,16 +580,15 @@ def fig_rose(run, out_dir):
             sets.append((which, title, s))
     if not sets:
         return f
-    _, _, grid = sphere_grid()
     rmax, drawn = 0.0, []
-    for which, title, s in sets:
-        fk = kanatani_density(s["D2"], s["D4"], grid)
+    for which, title, st in sets:
+        fk = st["kanatani"]
         if np.any(fk < 0):
             f.notes.append(f"'{which}': Kanatani's density is negative in places (drawn as 0)")
             fk = np.clip(fk, 0, None)
-        hist = rose_histogram(s["normals"]) if s["normals"] is not None and len(s["normals"]) else None
+        hist = st["hist"]
         rmax = max(rmax, float(fk.max()), 0.0 if hist is None else float(hist[0].max()))
-        drawn.append((which, title, s, fk, hist))
+        drawn.append((which, title, st, fk, hist))
     rmax *= 1.05
     norm = colors.Normalize(0, rmax)
     cmap = cm.viridis
@@ -654,6 +601,7 @@ def fig_rose(run, out_dir):
             X, Y, Z, quad_r = rose_surface(*hist)
             ax.plot_surface(X, Y, Z, facecolors=cmap(norm(quad_r)), rstride=1, cstride=1, linewidth=0.25,
                             edgecolor=(1, 1, 1, 0.3), antialiased=True, shade=True, zorder=1)
+        grid = s["unit"]
         ax.plot_wireframe(fk * grid[..., 0], fk * grid[..., 1], fk * grid[..., 2], rstride=2, cstride=3,
                           color="black", linewidth=0.4, alpha=0.6, zorder=2)
         ax.set_xlim(-rmax, rmax), ax.set_ylim(-rmax, rmax), ax.set_zlim(-rmax, rmax)
@@ -665,7 +613,7 @@ def fig_rose(run, out_dir):
         ax.set_ylabel("$f\\,n_y$ (sr$^{-1}$)", labelpad=2)
         ax.set_zlabel("$f\\,n_z$ (sr$^{-1}$), z = up", labelpad=2)
         ax.tick_params(labelsize=7, pad=0)
-        n_c = "no normals given" if s["normals"] is None else f"{len(s['normals'])} contacts"
+        n_c = "contacts not given" if s["contacts"] is None else f"{s['contacts']:.0f} contacts"
         psi = "not given" if s["psi"] is None else f"{s['psi']:.3f}"
         ax.set_title(f"{title}\n$\\Psi$ = {psi}, {n_c}", fontsize=10)
         pv = ("" if s["principal_values"] is None else
@@ -683,7 +631,8 @@ def fig_force_chains(run, out_dir):
     """Fig. 17: contact-force segments, side view (x-z) and 3D, strong chains emphasised."""
     f = Figure("Force chains", "Fig. 17",
                "Grain-grain contact forces at the end of the test, each drawn as a segment between the two "
-               "grain centres. Contacts carrying more than the mean force (strong chains) are coloured and "
+               "grain centres. Contacts carrying more than the mean force (strong chains, as the engine marks "
+               "them in analysis/force_chains.csv) are coloured and "
                "thickened by force; the weaker ones are thin and grey. Left: side view, projected on the x-z "
                "plane (x = shear direction); right: 3D view.")
     p = run.path("analysis/force_chains.csv")
@@ -698,16 +647,21 @@ def fig_force_chains(run, out_dir):
     lacking = [c for c in need if c not in fc]
     if lacking:
         return f.missing("analysis/force_chains.csv columns " + ", ".join(lacking))
-    a = np.column_stack([fc[c] for c in need])
+    if "strong" not in fc:
+        f.missing("analysis/force_chains.csv column strong", "every contact drawn as weak")
+    a = np.column_stack([fc[c] for c in need] + [fc.get("strong", np.zeros(len(fc["force_N"])))])
     a = a[np.all(np.isfinite(a), axis=1)]
     if len(a) == 0:
         f.notes.append("not available: analysis/force_chains.csv has no contacts")
         return f
     p1, p2, force = 1e3 * a[:, 0:3], 1e3 * a[:, 3:6], np.abs(a[:, 6])
     order = np.argsort(force)
-    p1, p2, force = p1[order], p2[order], force[order]
-    mean, fmax = float(force.mean()), float(force.max())
-    strong = force > mean
+    p1, p2, force, strong = p1[order], p2[order], force[order], a[order, 7] > 0.5
+    fmax = float(force.max())
+    mean = num(get(run.info, "final", "contact_force_mean_N"))
+    if mean is None:
+        f.missing("run.json final.contact_force_mean_N", "colour scale from the weakest strong contact")
+        mean = float(force[strong].min()) if np.any(strong) else fmax
     norm = colors.Normalize(mean, fmax if fmax > mean else mean * 1.0001)
     cmap = colors.LinearSegmentedColormap.from_list("chains", cm.inferno_r(np.linspace(0.2, 0.95, 256)))
     t = np.clip((force - mean) / max(fmax - mean, 1e-300), 0, 1)  # 0 at the mean force, 1 at the largest
@@ -915,7 +869,6 @@ def fig_peaks_vs_roundness(runs, out_dir):
     fig, axes = plt.subplots(1, 2, figsize=(10.0, 4.2))
     for ax, peak, ylabel, title in ((axes[0], Run.peak_friction, "peak friction angle $\\phi_p$ (deg)", "(c)"),
                                     (axes[1], Run.peak_dilation, "peak dilation angle $\\psi_p$ (deg)", "(d)")):
-        xs, ys = [], []
         for r in have:
             v, _ = peak(r)
             if v is None:
@@ -923,17 +876,10 @@ def fig_peaks_vs_roundness(runs, out_dir):
             R = float(r.info["mean_roundness"])
             ax.plot([R], [v], "o", ms=8, color=col[id(r)])
             ax.annotate(r.label, (R, v), xytext=(6, 5), textcoords="offset points", fontsize=8)
-            xs.append(R), ys.append(v)
-        if len(xs) >= 2 and np.ptp(xs) > 0:
-            k, b = np.polyfit(xs, ys, 1)
-            xx = np.array([min(xs), max(xs)])
-            ax.plot(xx, k * xx + b, color="0.5", lw=0.9, ls="--", label=f"least-squares line, slope {k:.1f}° per unit R")
         ax.set_xlabel("mean grain roundness R (–)")
         ax.set_ylabel(ylabel)
         ax.set_title(f"{title} {ylabel.split(' $')[0]}")
         ax.margins(x=0.15, y=0.2)
-        if len(xs) >= 2 and np.ptp(xs) > 0:
-            ax.legend(fontsize=8, loc="best")
     fig.tight_layout()
     return f.save(fig, out_dir, "peaks_vs_roundness.png")
 

@@ -45,7 +45,8 @@ comparison_pngs=(stress_strain_overlay.png peaks_vs_roundness.png)
 # --- two fake runs ---------------------------------------------------------------
 "$PY" "$here/make_fake_run.py" "$tmp/runs/angular" --preset angular --seed 1 >/dev/null
 "$PY" "$here/make_fake_run.py" "$tmp/runs/beads" --preset glass-beads --seed 2 >/dev/null
-for f in series.csv run.json analysis/profile.csv analysis/band.json analysis/fabric.json analysis/force_chains.csv; do
+for f in series.csv run.json analysis/profile.csv analysis/band.json analysis/fabric.json analysis/force_chains.csv \
+         analysis/derived.csv; do
   [ -f "$tmp/runs/angular/$f" ] || fail "make_fake_run.py did not write $f"
 done
 pass "make_fake_run.py writes every file of the contract"
@@ -85,6 +86,33 @@ check_report "$tmp/cmp0" stress_strain_overlay.png
 [ ! -e "$tmp/cmp0/peaks_vs_roundness.png" ] || fail "scatter drawn although no run has a mean roundness"
 grep -q "not available: run.json mean_roundness missing" "$tmp/cmp0/index.html" || fail "missing scatter not noted"
 pass "--out, and the roundness scatter skipped with a note"
+
+# --- the report reads the engine's numbers and derives none ------------------------
+# No fitting, tensors, eigenvalues or histograms in report.py: those are src/analysis/'s.
+if grep -nE "einsum|polyfit|eigvalsh|linalg|histogram2d|arctan2|def (kanatani|octahedral|dilation_angle|rose_histogram)" \
+    "$here/report.py"; then
+  fail "report.py derives a number the engine computes (the lines above)"
+fi
+# Without the engine's Kanatani grid and dilation angle the report says so instead of computing them.
+cp -r "$tmp/runs/angular" "$tmp/runs/nogrid"
+rm -rf "$tmp/runs/nogrid/report" "$tmp/runs/nogrid/analysis/derived.csv"
+"$PY" - "$tmp/runs/nogrid/analysis/fabric.json" <<'PYEOF'
+import json, sys
+p = sys.argv[1]
+fab = json.load(open(p))
+for which in ("all", "band"):
+    del fab[which]["kanatani_grid"]
+json.dump(fab, open(p, "w"))
+PYEOF
+"$PY" "$here/report.py" "$tmp/runs/nogrid" >/dev/null || fail "report.py failed without kanatani_grid"
+page="$tmp/runs/nogrid/report/index.html"
+grep -q "not available: analysis/fabric.json &#x27;all&#x27; kanatani_grid missing" "$page" \
+  || grep -q "not available: analysis/fabric.json 'all' kanatani_grid missing" "$page" \
+  || fail "a fabric.json without kanatani_grid is not noted"
+[ ! -e "$tmp/runs/nogrid/report/rose_diagram.png" ] || fail "rose diagram drawn without the engine's Kanatani grid"
+grep -q "not available: analysis/derived.csv column dilation_angle_deg missing" "$page" \
+  || fail "a run without analysis/derived.csv is not noted"
+pass "the report reads the engine's numbers: no Kanatani, Psi, dilation or fits of its own"
 
 # --- a run without analysis/ --------------------------------------------------------
 cp -r "$tmp/runs/angular" "$tmp/runs/bare"

@@ -1,11 +1,12 @@
 // The files of analysis/ (contents in analysis_files.h).
 #include "io/analysis_files.h"
 
-#include "analysis/fabric.h"
-#include "analysis/kanatani.h"
+#include "analysis/dilation.h"
+#include "analysis/force_chains.h"
 #include "core/error.h"
 #include "io/atomic_file.h"
 #include "io/json.h"
+#include "io/run_summary.h"
 #include "io/shear_analysis.h"
 #include "io/table.h"
 
@@ -34,6 +35,15 @@ nlohmann::json tensor4_json(const analysis::Tensor4& t) {  // nested [i][j][k][l
     }
     out.push_back(std::move(ti));
   }
+  return out;
+}
+
+// A row-major rows x (values / rows) grid as nested arrays.
+nlohmann::json grid_json(const std::vector<double>& values, std::size_t rows) {
+  nlohmann::json out = nlohmann::json::array();
+  const std::size_t cols = rows ? values.size() / rows : 0;
+  for (std::size_t r = 0; r < rows; ++r)
+    out.push_back(std::vector<double>(values.begin() + r * cols, values.begin() + (r + 1) * cols));
   return out;
 }
 
@@ -66,49 +76,56 @@ nlohmann::json band_json(const BandAnalysis& b) {
   return j;
 }
 
-std::string force_chains_csv(const State& s) {
+std::string force_chains_csv(const std::vector<analysis::ForceSegment>& segments) {
   Table t;
-  t.columns = {"x1_m", "y1_m", "z1_m", "x2_m", "y2_m", "z2_m", "force_N", "tangential_force_N"};
-  for (const Contact& pc : s.contacts) {
-    if (!in_contact(pc)) continue;
-    const Vec3& a = s.bodies[pc.a].x;
-    const Vec3& b = s.bodies[pc.b].x;
-    const Vec3 n = pc.geo.normal.normalized();
-    const double tangential = (pc.force - pc.force.dot(n) * n).norm();
-    t.add_row({a.x(), a.y(), a.z(), b.x(), b.y(), b.z(), pc.normal_force, tangential});
-  }
+  t.columns = {"x1_m", "y1_m", "z1_m", "x2_m", "y2_m", "z2_m", "force_N", "tangential_force_N", "strong"};
+  for (const analysis::ForceSegment& s : segments)
+    t.add_row({s.a.x(), s.a.y(), s.a.z(), s.b.x(), s.b.y(), s.b.z(), s.normal_force, s.tangential_force,
+               s.strong ? 1.0 : 0.0});
+  return t.to_csv();
+}
+
+std::string derived_csv(const LabTest& test) {
+  const std::vector<double> strain = series_column(test, "shear_strain");
+  const std::vector<double> psi = analysis::dilation_angle_series(series_column(test, "horizontal_displacement_m"),
+                                                                  series_column(test, "vertical_displacement_m"));
+  Table t;
+  t.columns = {"shear_strain", "dilation_angle_deg"};
+  for (std::size_t k = 0; k < strain.size() && k < psi.size(); ++k) t.add_row({strain[k], psi[k]});
   return t.to_csv();
 }
 
 }  // namespace
 
-nlohmann::json fabric_entry(const State& state, const analysis::GrainMask* mask, std::size_t max_normals) {
-  const std::vector<Vec3> normals = analysis::contact_normals(state, mask);
+nlohmann::json fabric_json(const analysis::FabricResult& f, std::size_t max_normals) {
   nlohmann::json j;
-  j["contacts"] = normals.size();
-  if (normals.empty()) {
+  j["contacts"] = f.contacts;
+  if (f.contacts == 0) {
     j["note"] = "no grain-grain contacts in this set";
     return j;
   }
-  const analysis::FabricTensors f = analysis::fabric_tensors(normals);
-  const analysis::KanataniDensity k = analysis::kanatani_density(f);
-  const analysis::Principal p = analysis::principal(f.phi);
   j["phi"] = matrix_json(f.phi);
-  j["D2"] = matrix_json(k.D2);
-  j["D4"] = tensor4_json(k.D4);
-  j["principal_values"] = {p.values[0], p.values[1], p.values[2]};
-  j["principal_directions"] = matrix_json(p.directions);
-  j["psi"] = analysis::octahedral_fabric_factor(p.values);
-  const std::size_t n = normals.size(), m = std::min(n, std::max<std::size_t>(1, max_normals));
+  j["D2"] = matrix_json(f.density.D2);
+  j["D4"] = tensor4_json(f.density.D4);
+  j["principal_values"] = {f.principal.values[0], f.principal.values[1], f.principal.values[2]};
+  j["principal_directions"] = matrix_json(f.principal.directions);
+  j["psi"] = f.psi;
+  const std::size_t n = f.normals.size(), m = std::min(n, std::max<std::size_t>(1, max_normals));
   nlohmann::json list = nlohmann::json::array();
   for (std::size_t i = 0; i < m; ++i) {
-    const Vec3 v = normals[i * n / m].normalized();  // i n / m: evenly spread over the list
+    const Vec3& v = f.normals[i * n / m];  // i n / m: evenly spread over the list
     list.push_back({v.x(), v.y(), v.z()});
   }
   j["normals"] = std::move(list);
   j["normals_subsampled"] = m < n;
   j["normals_total"] = n;
   j["normals_written"] = m;
+  j["rose"] = {{"z_edges", f.rose.z_edges},
+               {"azimuth_edges_rad", f.rose.azimuth_edges},
+               {"density_per_sr", grid_json(f.rose.density, f.rose.z_edges.empty() ? 0 : f.rose.z_edges.size() - 1)}};
+  j["kanatani_grid"] = {{"theta_rad", f.kanatani_grid.theta},
+                        {"phi_rad", f.kanatani_grid.phi},
+                        {"density_per_sr", grid_json(f.kanatani_grid.density, f.kanatani_grid.theta.size())}};
   return j;
 }
 
@@ -125,9 +142,9 @@ void write_analysis_files(const LabTest& test, const std::filesystem::path& fold
   write_file_atomically(dir / "profile.csv", profile_csv(b.profile));
   write_json_file(dir / "band.json", band_json(b));
   nlohmann::json fabric;
-  fabric["all"] = fabric_entry(now, nullptr);
+  fabric["all"] = fabric_json(analysis::fabric_result(now));
   if (b.band.found && analysis::mask_count(b.mask) > 0) {
-    fabric["band"] = fabric_entry(now, &b.mask);
+    fabric["band"] = fabric_json(analysis::fabric_result(now, &b.mask));
   } else {
     fabric["band"] = {{"contacts", 0}, {"note", "no shear band found"}};
   }
@@ -136,7 +153,8 @@ void write_analysis_files(const LabTest& test, const std::filesystem::path& fold
   fabric["note"] = "unit normals of grain-grain contacts (sign-free); band: the contacts of the grains whose "
                    "reference centre is in the band, each once per such grain (as CN_S counts them)";
   write_json_file(dir / "fabric.json", fabric);
-  write_file_atomically(dir / "force_chains.csv", force_chains_csv(now));
+  write_file_atomically(dir / "force_chains.csv", force_chains_csv(analysis::force_segments(now)));
+  write_file_atomically(dir / "derived.csv", derived_csv(test));
 }
 
 }  // namespace grainlab

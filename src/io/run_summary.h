@@ -1,13 +1,17 @@
-// The micromechanics entries of run.json (scripts/report.py reads them):
+// The micromechanics entries of run.json (scripts/report.py reads them),
+// serialised from analysis/micromechanics.h:
 //   "mean_roundness"               mean Wadell roundness of the grains (each
 //                                  grain its shape's; spheres count 1)
-//   "peaks": {"fabric_psi"}        largest fabric_psi of the series
+//   "peaks": {"fabric_psi", "fabric_psi_band"}  largest values of those series
 //   "final": {"cap_normal_stress_Pa", "love_weber_stress_Pa" (3x3, compression
 //            positive), "love_weber_mean_Pa", "love_weber_deviatoric_Pa",
-//            "love_weber_asymmetry", "specimen_volume_m3"}: the Love-Weber
+//            "love_weber_asymmetry", "specimen_volume_m3", "contacts",
+//            "contact_force_mean_N", "contact_force_max_N",
+//            "contact_force_std_N", "strong_contact_fraction"}: the Love-Weber
 //            stress of the final contacts (analysis/stress.h, wall contacts
 //            included) over the specimen volume = box area x cap height, next
-//            to the stress the cap measures, for comparison.
+//            to the stress the cap measures, for comparison; and the
+//            normal contact force statistics (analysis/force_stats.h).
 #pragma once
 
 #include "dynamics/model.h"
@@ -15,16 +19,13 @@
 
 #include <nlohmann/json.hpp>
 
-#include <optional>
+#include <string>
+#include <vector>
 
 namespace grainlab {
 
-// Mean Wadell roundness over the grains (geometry/shape_metrics.h on each
-// distinct shape once, weighted by the number of grains using it); nullopt
-// when a shape cannot be measured. Cost: one shape_metrics per library shape,
-// not per grain (measured on one core: 24 shapes of 500 faces, 0.03 s angular
-// to 0.08 s sub-angular), so it is computed at the end of every run.
-std::optional<double> mean_grain_roundness(const Model& model);
+// The named column of the test's series (empty if it has none).
+std::vector<double> series_column(const LabTest& test, const std::string& name);
 
 // Adds the entries above to a run.json object (creating "peaks" and "final"
 // if needed; existing keys there are kept).

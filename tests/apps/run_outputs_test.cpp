@@ -178,9 +178,17 @@ TEST(RunOutputs, AnalysisFilesFollowTheReportContract) {
 
   const Table chains = grainlab::read_csv(a / "force_chains.csv");
   EXPECT_EQ(chains.columns, (std::vector<std::string>{"x1_m", "y1_m", "z1_m", "x2_m", "y2_m", "z2_m", "force_N",
-                                                      "tangential_force_N"}));
+                                                      "tangential_force_N", "strong"}));
   EXPECT_EQ(chains.rows.size(), fabric["all"]["contacts"].get<std::size_t>());
   for (const auto& row : chains.rows) EXPECT_GE(row[6], 0.0);
+
+  // The engine's derived series: one dilation angle per series row.
+  const Table derived = grainlab::read_csv(a / "derived.csv");
+  EXPECT_EQ(derived.columns, (std::vector<std::string>{"shear_strain", "dilation_angle_deg"}));
+  EXPECT_EQ(derived.rows.size(), grainlab::read_csv(r.out / "series.csv").rows.size());
+  // The rose histogram and Kanatani grid the report plots.
+  EXPECT_EQ(fabric["all"]["kanatani_grid"]["density_per_sr"].size(), 31u);
+  EXPECT_GE(fabric["all"]["rose"]["density_per_sr"].size(), 5u);
 }
 
 TEST(RunOutputs, RunJsonHasRoundnessPeakPsiAndLoveWeberStress) {
