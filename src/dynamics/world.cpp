@@ -190,17 +190,21 @@ void World::compute_bounds() {
         return have_ref ? (state.bodies[i].x - state.x_at_rebuild[i]).squaredNorm() : 0.0;
       },
       0.0, 256, settings.threads);
-  max_move_sq_ = have_ref ? max_sq : std::numeric_limits<double>::infinity();
+  const double max_move_sq = have_ref ? max_sq : std::numeric_limits<double>::infinity();
+  // Grain bounds (bounding sphere plus half the skin) only when the candidate
+  // pairs are due for a rebuild: a grain has moved more than skin/2.
+  rebuild_due_ = state.rebuild_pairs || max_move_sq > 0.25 * settings.skin * settings.skin;
+  if (!rebuild_due_) return;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double r = model.bodies[i].bounding_radius + 0.5 * settings.skin;
+    aabb_[i] = {state.bodies[i].x.array() - r, state.bodies[i].x.array() + r};
+  }
 }
 
 void World::broadphase() {
   const std::size_t n = state.bodies.size();
-  // Grain-grain candidates: rebuilt only when a grain has moved more than skin/2.
-  if (state.rebuild_pairs || max_move_sq_ > 0.25 * settings.skin * settings.skin) {
-    for (std::size_t i = 0; i < n; ++i) {
-      const double r = model.bodies[i].bounding_radius + 0.5 * settings.skin;
-      aabb_[i] = {state.bodies[i].x.array() - r, state.bodies[i].x.array() + r};
-    }
+  // Grain-grain candidates: rebuilt from the bounds when they are due.
+  if (rebuild_due_) {
     sap_.find_pairs(aabb_, candidates_);
     scratch_.resize(candidates_.size());
     for (std::size_t k = 0; k < candidates_.size(); ++k) {
