@@ -2,6 +2,7 @@
 // the step uses without touching the Model, and friction still mixes by the
 // minimum of the two materials. A sliding block checks the friction the step
 // applies against Coulomb's law: a = g (sin t - mu cos t).
+#include "core/error.h"
 #include "dynamics/world.h"
 #include "geometry/primitives.h"
 
