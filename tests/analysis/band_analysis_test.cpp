@@ -40,7 +40,7 @@ Field ramp(double d) {
 TEST(BandResult, LayersOfOneDiameterAndTheRampsBand) {
   const Field f = ramp(1 * kMm);
   // Cap at 10 mm, diameter 0.5 mm: 20 layers; strain 0.05 of a 20 mm box: d_h = 1 mm.
-  const BandResult b = band_result(f.now, f.ref, {10 * kMm, 0.5 * kMm, 0.05, 20 * kMm});
+  const BandResult b = band_result(f.now, f.ref, {0.0, 10 * kMm, 0.5 * kMm, 0.05, 20 * kMm});
   EXPECT_EQ(b.profile_spec.layers, 20);
   EXPECT_DOUBLE_EQ(b.min_jump, 0.1 * 0.05 * 20 * kMm);
   ASSERT_TRUE(b.band.found);
@@ -57,7 +57,7 @@ TEST(BandResult, LayersOfOneDiameterAndTheRampsBand) {
 TEST(BandResult, NoBandWhileThePlateausDifferByLessThanATenthOfTheBoxDisplacement) {
   // The profile jumps by 0.05 mm, but the box moved 1 mm: no band.
   const Field f = ramp(0.05 * kMm);
-  const BandResult b = band_result(f.now, f.ref, {10 * kMm, 0.5 * kMm, 0.05, 20 * kMm});
+  const BandResult b = band_result(f.now, f.ref, {0.0, 10 * kMm, 0.5 * kMm, 0.05, 20 * kMm});
   EXPECT_FALSE(b.band.found);
   EXPECT_EQ(mask_count(b.mask), 0u);
 }
@@ -65,9 +65,9 @@ TEST(BandResult, NoBandWhileThePlateausDifferByLessThanATenthOfTheBoxDisplacemen
 TEST(ShearSample, NaNBeforeShearAndBandLimitsOnceABandExists) {
   const Field f = ramp(1 * kMm);
   State not_yet;  // no reference: before shear
-  const ShearSample before = shear_sample(f.now, not_yet, {10 * kMm, 0.5 * kMm, 0.0, 20 * kMm});
+  const ShearSample before = shear_sample(f.now, not_yet, {0.0, 10 * kMm, 0.5 * kMm, 0.0, 20 * kMm});
   EXPECT_TRUE(std::isnan(before.rotation_mean_deg) && std::isnan(before.band_low_m) && std::isnan(before.fabric_psi));
-  const ShearSample s = shear_sample(f.now, f.ref, {10 * kMm, 0.5 * kMm, 0.05, 20 * kMm});
+  const ShearSample s = shear_sample(f.now, f.ref, {0.0, 10 * kMm, 0.5 * kMm, 0.05, 20 * kMm});
   EXPECT_EQ(s.rotation_mean_deg, 0.0);  // no grain turned
   EXPECT_EQ(s.rotation_band_deg, 0.0);
   EXPECT_EQ(s.coordination_number_band, 0.0);  // no contacts

@@ -6,6 +6,7 @@
 //     = 2 (x_m / v) sqrt(pi) Gamma(7/5) / Gamma(9/10).
 #include "dynamics/laws/registry.h"
 #include "dynamics/world.h"
+#include "head_on_impact.h"
 
 #include <gtest/gtest.h>
 
@@ -16,39 +17,13 @@ using namespace grainlab;
 
 namespace {
 
-struct Impact {
-  double duration = 0;     // s
-  double restitution = 0;  // rebound / approach speed
-};
+using testing_support::Impact;
 
-// Two equal spheres approach head-on at `speed` each... relative speed v.
+// Two equal spheres closing at relative speed v, about steps_per_contact_estimate
+// steps over the expected contact time t_estimate.
 Impact simulate_impact(ContactLaw law, const Material& mat, double radius, double v,
                        double steps_per_contact_estimate, double t_estimate) {
-  World w;
-  w.model.law = law;
-  w.model.gravity = Vec3::Zero();
-  const Index m = w.model.add_material(mat);
-  const Index s = w.model.add_sphere_shape(radius);
-  const double gap = 1e-3 * radius;
-  w.add_body(s, m, 1.0, Vec3(-radius - gap, 0, 0), Quat::Identity(), Vec3(0.5 * v, 0, 0));
-  w.add_body(s, m, 1.0, Vec3(radius + gap, 0, 0), Quat::Identity(), Vec3(-0.5 * v, 0, 0));
-  const double dt = t_estimate / steps_per_contact_estimate;
-  Impact out;
-  bool started = false;
-  int touching_steps = 0;
-  for (int i = 0; i < 100000; ++i) {
-    w.step(dt);
-    const bool touching = w.contact_count() > 0;
-    if (touching) {
-      started = true;
-      ++touching_steps;
-    } else if (started) {
-      break;
-    }
-  }
-  out.duration = touching_steps * dt;
-  out.restitution = (w.state.bodies[1].v.x() - w.state.bodies[0].v.x()) / v;
-  return out;
+  return testing_support::head_on_impact(law, mat, radius, v, t_estimate / steps_per_contact_estimate);
 }
 
 double hertz_duration(double m_eff, double r_eff, double e_star, double v) {

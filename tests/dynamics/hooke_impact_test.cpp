@@ -23,6 +23,7 @@
 // 2 w0 dt bounds both (about 0.6 % at 1000 steps per contact).
 #include "dynamics/laws/registry.h"
 #include "dynamics/world.h"
+#include "head_on_impact.h"
 
 #include <gtest/gtest.h>
 
@@ -34,36 +35,11 @@ using namespace grainlab;
 
 namespace {
 
-struct Impact {
-  double duration = 0;     // s
-  double restitution = 0;  // rebound / approach speed
-};
+using testing_support::Impact;
 
 // Two equal Hooke spheres approach head-on at relative speed v; dt as given.
 Impact simulate_impact(const Material& mat, double radius, double v, double dt) {
-  World w;
-  w.model.law = contact_law<HookeLaw>();
-  w.model.gravity = Vec3::Zero();
-  const Index m = w.model.add_material(mat);
-  const Index s = w.model.add_sphere_shape(radius);
-  const double gap = 1e-3 * radius;
-  w.add_body(s, m, 1.0, Vec3(-radius - gap, 0, 0), Quat::Identity(), Vec3(0.5 * v, 0, 0));
-  w.add_body(s, m, 1.0, Vec3(radius + gap, 0, 0), Quat::Identity(), Vec3(-0.5 * v, 0, 0));
-  Impact out;
-  bool started = false;
-  int touching_steps = 0;
-  for (int i = 0; i < 100000; ++i) {
-    w.step(dt);
-    if (w.contact_count() > 0) {
-      started = true;
-      ++touching_steps;
-    } else if (started) {
-      break;
-    }
-  }
-  out.duration = touching_steps * dt;
-  out.restitution = (w.state.bodies[1].v.x() - w.state.bodies[0].v.x()) / v;
-  return out;
+  return testing_support::head_on_impact(contact_law<HookeLaw>(), mat, radius, v, dt);
 }
 
 // The closed form above for gamma < 2 w0 (gamma = 0 included).
