@@ -71,7 +71,7 @@ TEST(PreparationSearch, DISABLED_SpheresReachDr03And09OnTheirOwnIndices) {
 }
 
 TEST(PreparationSearch, UnreachableTargetStopsWithWhatItReached) {
-  DirectShearSpec spec = target(0.9);
+  DirectShearSpec spec = testing_support::sphere_spec();
   spec.specimen.void_ratio = 0.30;  // denser than spheres pack (e >= 0.5)
   spec.specimen.indices = "lab";
   PreparationSearchOptions o;
