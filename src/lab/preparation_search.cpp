@@ -113,9 +113,9 @@ Preparation prepare_to_target(const DirectShearSpec& spec, const PreparationSear
       const double f = (target - *e_lo) / (*e_hi - *e_lo);
       u = u_lo + std::clamp(f, 0.1, 0.9) * (u_hi - u_lo);
     } else if (e_hi) {  // every trial too loose: towards frictionless
-      u = u_hi <= 0.25 * u_max ? 0 : 0.5 * u_hi;
+      u = u_hi <= 0.5 * u_max ? 0 : 0.5 * u_hi;
     } else {  // every trial too dense: towards the loosest
-      u = u_lo >= 0.75 * u_max ? u_max : 0.5 * (u_lo + u_max);
+      u = u_lo >= 0.5 * u_max ? u_max : 0.5 * (u_lo + u_max);
     }
   }
   if (why.empty()) why = fmt::format("{} trials did not land within the tolerance (the packing's scatter at a "
