@@ -195,7 +195,7 @@ INSTANTIATE_TEST_SUITE_P(
                       BadValue{"[specimen]\nrelative_density = 1.2\n", "specimen.relative_density"},
                       BadValue{"[specimen]\nrelative_density = -0.1\n", "specimen.relative_density"},
                       BadValue{"[specimen]\nindices = \"mine\"\n", "specimen.indices"},
-                      BadValue{"[specimen]\nown_e_min = 0.6\n", "specimen.own_e_max"},
+                      BadValue{"[specimen]\nown_e_max = 0.8\n", "specimen.own_e_max"},
                       BadValue{"[specimen]\nown_e_min = 0.6\nown_e_max = 0.5\n", "specimen.own_e_max"},
                       BadValue{"[specimen]\ndeposition_friction = -0.5\n", "specimen.deposition_friction"},
                       BadValue{"[box]\ngap = -1e-3\n", "box.gap"},
