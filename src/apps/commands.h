@@ -13,6 +13,9 @@ using Command = std::function<int()>;
 // `grainlab grains generate|stats`: synthetic grain sets and grain shape metrics.
 Command add_grains_command(CLI::App& app);
 
+// `grainlab grains index` (registered by add_grains_command on its `grains` app).
+Command add_grains_index_command(CLI::App& grains);
+
 // `grainlab run`: a direct shear test from a config file.
 Command add_run_command(CLI::App& app);
 

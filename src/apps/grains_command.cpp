@@ -152,7 +152,8 @@ Command add_grains_command(CLI::App& app) {
   auto g = std::make_shared<GenerateOptions>();
   auto s = std::make_shared<StatsOptions>();
   auto* grains = app.add_subcommand(
-      "grains", "generate synthetic sand grains, or measure grain meshes (size, sphericity, Wadell roundness)");
+      "grains", "generate synthetic sand grains, measure grain meshes (size, sphericity, Wadell roundness), or measure a "
+      "grain set's own index void ratios (e_min, e_max)");
   grains->require_subcommand(1);
 
   std::string presets = "angularity class, standing in for the paper's sands:";
@@ -199,10 +200,11 @@ Command add_grains_command(CLI::App& app) {
       "principal projections). A one-line summary per set (folder) goes to standard error.");
   stats->add_option("files", s->inputs, "mesh files, or folders of them (each folder is one set)")->required();
 
-  return [gen, stats, g, s]() {
+  const Command index = add_grains_index_command(*grains);
+  return [gen, stats, g, s, index]() {
     if (*gen) return run_generate(*g);
     if (*stats) return run_stats(*s);
-    return -1;
+    return index();
   };
 }
 

@@ -6,6 +6,7 @@
 // temporary name and renamed.
 #include "apps/commands.h"
 #include "apps/report.h"
+#include "apps/run_preparation.h"
 #include "core/error.h"
 #include "core/parallel.h"
 #include "core/timer.h"
@@ -58,7 +59,8 @@ void write_series(const LabTest& test, const std::filesystem::path& out) {
   write_file_atomically(out / "series.csv", t.to_csv());
 }
 
-void write_run_json(const LabTest& test, const std::filesystem::path& out, double wall_s) {
+void write_run_json(const LabTest& test, const std::filesystem::path& out, double wall_s,
+                    const nlohmann::json& preparation) {
   const World& w = test.world();
   nlohmann::json j;
   j["grainlab_version"] = "0.1.0";
@@ -71,6 +73,7 @@ void write_run_json(const LabTest& test, const std::filesystem::path& out, doubl
   for (const SummaryValue& v : test.summary()) (v.group.empty() ? j : j[v.group])[v.key] = v.value;
   j["timings"] = {{"wall_s", wall_s}, {"steps", w.state.step}, {"simulated_s", w.state.time}};
   add_micromechanics_summary(j, test);
+  j["specimen_preparation"] = preparation;
   write_json_file(out / "run.json", j);
 }
 
@@ -85,11 +88,8 @@ int run(const RunOptions& o) {
   const DirectShearSpec spec = o.use_defaults ? parse_config(default_config_toml(), "<embedded default>")
                                               : load_config(o.file);
 
-  // Everything that can refuse the run happens before anything is written.
-  const std::unique_ptr<LabTest> made = make_lab_test("direct-shear", spec);
-  LabTest& test = *made;
-  test.world().settings.threads = spec.numerics.threads;
-  observe_shear_analysis(test);  // the same on --resume: the rows of both runs then match
+  // Everything that can refuse the run happens before anything is written
+  // (but the own index densities, which are measured once and kept).
   const std::filesystem::path out = spec.output.folder;
   const std::filesystem::path checkpoint = out / "checkpoint.bin";
   if (o.resume) {
@@ -101,6 +101,12 @@ int run(const RunOptions& o) {
       input_error("--resume: the config differs from the run in '{}' ({}); resume with the same config "
                   "or start a new run in another output.folder",
                   out.string(), fmt::join(diff, ", "));
+  }
+  PreparedRun prepared = prepare_run(spec, out, o.resume);
+  LabTest& test = *prepared.test;
+  test.world().settings.threads = spec.numerics.threads;
+  observe_shear_analysis(test);  // the same on --resume: the rows of both runs then match
+  if (o.resume) {
     Checkpoint ck = load_checkpoint(checkpoint);
     if (ck.config_hash != config_hash(spec))
       input_error("--resume: checkpoint '{}' belongs to another config", checkpoint.string());
@@ -172,7 +178,7 @@ int run(const RunOptions& o) {
   write_series(test, out);
   write_analysis_files(test, out);
   snapshots.finish(test);
-  write_run_json(test, out, clock.seconds());
+  write_run_json(test, out, clock.seconds(), prepared.record);
   fmt::print("done in {:.0f} s: {}\noutputs in {}: series.csv, run.json, checkpoint.bin, analysis/, "
              "paraview/ ({} snapshots: open grains.pvd, contacts.pvd, walls.pvd in ParaView)\n",
              clock.seconds(), test.result_line(), out.string(), snapshots.writer().grains().entries().size());

@@ -63,12 +63,16 @@ const std::array kFields{
     GL_FIELD("box", "height", box.height, "m, target specimen height after preparation"),
     GL_FIELD("box", "gap", box.gap, "m, opening between the lower and upper halves"),
 
-    GL_FIELD("specimen", "relative_density", specimen.relative_density, "target Dr = (e_max - e)/(e_max - e_min), in [0, 1]"),
-    GL_FIELD("specimen", "e_max", specimen.e_max, "maximum index void ratio of the sand"),
-    GL_FIELD("specimen", "e_min", specimen.e_min, "minimum index void ratio of the sand"),
-    GL_FIELD("specimen", "void_ratio", specimen.void_ratio, "if > 0: target void ratio, overrides relative_density"),
-    GL_FIELD("specimen", "tolerance", specimen.tolerance, "accepted |e - e_target|"),
-    GL_FIELD("specimen", "deposition_friction", specimen.deposition_friction, "friction between grains while raining and compacting (lower: denser)"),
+    GL_FIELD("specimen", "relative_density", specimen.relative_density, "target Dr = (e_max - e)/(e_max - e_min) on specimen.indices, in [0, 1]"),
+    GL_FIELD("specimen", "indices", specimen.indices, "\"own\": Dr on the grains' own index voids (own_e_min/own_e_max; measured when 0) | \"lab\": on the lab's e_min/e_max"),
+    GL_FIELD("specimen", "own_e_max", specimen.own_e_max, "the grains' own loosest void ratio (`grainlab grains index`); 0 = the run measures it"),
+    GL_FIELD("specimen", "own_e_min", specimen.own_e_min, "the grains' own densest void ratio (`grainlab grains index`); 0 = the run measures it"),
+    GL_FIELD("specimen", "e_max", specimen.e_max, "the lab's maximum index void ratio of the real sand (reported; the target with indices = \"lab\")"),
+    GL_FIELD("specimen", "e_min", specimen.e_min, "the lab's minimum index void ratio of the real sand"),
+    GL_FIELD("specimen", "void_ratio", specimen.void_ratio, "if > 0: target void ratio of the whole specimen, overrides relative_density"),
+    GL_FIELD("specimen", "tolerance", specimen.tolerance, "accepted |e - e_target| (void_ratio and lab-index targets)"),
+    GL_FIELD("specimen", "relative_density_tolerance", specimen.relative_density_tolerance, "accepted |Dr - Dr_target| (own-index targets)"),
+    GL_FIELD("specimen", "deposition_friction", specimen.deposition_friction, "friction between grains while raining and compacting (lower: denser); -1 = chosen by bisection over trial preparations"),
 
     GL_FIELD("consolidation", "normal_stress", consolidation.normal_stress, "Pa, normal stress held by the top cap (100 kPa = 100e3)"),
     GL_FIELD("consolidation", "tolerance", consolidation.tolerance, "relative stress error accepted, in (0, 1)"),
@@ -362,7 +366,18 @@ void validate_spec(const DirectShearSpec& spec_in, const std::string& source, co
   need(sp.e_max > sp.e_min, "specimen.e_max", sp.e_max,
        fmt::format("larger than specimen.e_min = {}", sp.e_min));
   need(sp.tolerance > 0, "specimen.tolerance", sp.tolerance, "> 0 (in void ratio)");
-  need(sp.deposition_friction >= 0, "specimen.deposition_friction", sp.deposition_friction, ">= 0");
+  need(sp.relative_density_tolerance > 0 && sp.relative_density_tolerance < 1, "specimen.relative_density_tolerance",
+       sp.relative_density_tolerance, "in (0, 1) (a fraction of the index range: 5 % is 0.05)");
+  need_s(sp.indices == "own" || sp.indices == "lab", "specimen.indices", sp.indices,
+         "\"own\" (the grains' own index void ratios, measured) or \"lab\" (specimen.e_min/e_max)");
+  need(sp.own_e_min >= 0, "specimen.own_e_min", sp.own_e_min, ">= 0 (0: the run measures it)");
+  need(sp.own_e_max >= 0, "specimen.own_e_max", sp.own_e_max, ">= 0 (0: the run measures it)");
+  need((sp.own_e_min > 0) == (sp.own_e_max > 0), "specimen.own_e_max", sp.own_e_max,
+       "given together with specimen.own_e_min (both from `grainlab grains index`), or both 0 to measure them");
+  need(sp.own_e_max == 0 || sp.own_e_max > sp.own_e_min, "specimen.own_e_max", sp.own_e_max,
+       fmt::format("larger than specimen.own_e_min = {}", sp.own_e_min));
+  need(sp.deposition_friction >= 0 || sp.deposition_friction == -1, "specimen.deposition_friction",
+       sp.deposition_friction, ">= 0, or -1 to have it chosen by bisection");
 
   const ConsolidationSpec& c = spec.consolidation;
   need(c.normal_stress > 0, "consolidation.normal_stress", c.normal_stress, "> 0 (Pa; 100 kPa is 100e3)");

@@ -21,6 +21,18 @@ const char* shear_phase_name(ShearPhase p) {
 }
 
 DirectShearTest::DirectShearTest(const DirectShearSpec& spec) : spec_(spec) {
+  if (spec.targets_own_indices() && !spec.own_indices_known())
+    input_error("specimen.relative_density = {} is a Dr on the grains' own index void ratios "
+                "(specimen.indices = \"own\"), which are not known: measure them with `grainlab grains "
+                "index` and set specimen.own_e_min and specimen.own_e_max (`grainlab run` measures them "
+                "itself when they are missing), or set specimen.indices = \"lab\" to use the lab's "
+                "specimen.e_min/e_max, or give specimen.void_ratio",
+                spec.specimen.relative_density);
+  if (spec.specimen.deposition_friction < 0)
+    input_error("specimen.deposition_friction = {} means \"choose it by bisection\", which "
+                "lab/preparation_search.h does before the test is built (`grainlab run` does it); a "
+                "direct shear test built directly needs a friction >= 0",
+                spec.specimen.deposition_friction);
   Model& m = world_.model;
   m.law = spec.material.law;
   m.gravity = Vec3(0, 0, -kStandardGravity);
@@ -121,19 +133,28 @@ bool DirectShearTest::check_rest(ShearPhase p) {
 }
 
 void DirectShearTest::check_compaction() const {
-  const double e = p_.compacted_void_ratio, target = spec_.target_void_ratio();
-  if (std::abs(e - target) <= spec_.specimen.tolerance) return;
+  if (accept_any_density_) return;
+  const bool own = spec_.targets_own_indices();
+  const double e = own ? p_.compacted_bulk_void_ratio : p_.compacted_void_ratio, target = spec_.target_void_ratio();
+  const double dr = achieved_relative_density(), dr_error = dr - spec_.specimen.relative_density;
+  if (own ? std::abs(dr_error) <= spec_.specimen.relative_density_tolerance
+          : std::abs(e - target) <= spec_.specimen.tolerance)
+    return;
   throw RunError(fmt::format(
-      "specimen preparation reached void ratio e = {:.3f} (Dr = {:.0f} %) under {:.0f} kPa, but "
-      "the target is e = {:.3f} +- {:.3f} (Dr = {:.0f} %). {}",
-      e, 100 * achieved_relative_density(), spec_.consolidation.normal_stress * 1e-3, target,
-      spec_.specimen.tolerance, 100 * spec_.specimen.relative_density,
+      "specimen preparation reached {}void ratio e = {:.3f} (Dr = {:.0f} % on the {} indices) under {:.0f} kPa, "
+      "but the target is {} (Dr = {:.0f} %). {}",
+      own ? "bulk " : "", e, 100 * dr, own ? "grains' own" : "lab's", spec_.consolidation.normal_stress * 1e-3,
+      own ? fmt::format("Dr within +-{:.2f}", spec_.specimen.relative_density_tolerance)
+          : fmt::format("e = {:.3f} +- {:.3f}", target, spec_.specimen.tolerance),
+      100 * spec_.specimen.relative_density,
       e > target ? (spec_.specimen.deposition_friction > 0
-                        ? "Lower specimen.deposition_friction for a denser specimen, or set a reachable target."
+                        ? "Lower specimen.deposition_friction for a denser specimen (or set it to -1 to "
+                          "have it chosen by bisection), or set a reachable target."
                         : "Deposition is already frictionless, the densest this procedure makes: these "
-                          "grains in this box do not pack that densely. Raise specimen.e_min/e_max or "
-                          "set specimen.void_ratio to a reachable value.")
-                 : "Raise specimen.deposition_friction for a looser specimen."));
+                          "grains in this box do not pack that densely. Lower specimen.relative_density "
+                          "or set specimen.void_ratio to a reachable value.")
+                 : "Raise specimen.deposition_friction for a looser specimen (or set it to -1 to have it "
+                   "chosen by bisection)."));
 }
 
 bool DirectShearTest::advance(int max_steps) {
@@ -154,6 +175,7 @@ bool DirectShearTest::advance(int max_steps) {
     if (world_.state.step % kCheckEvery != 0 || !check_rest(p)) continue;
     if (p == ShearPhase::Compact) {
       p_.compacted_void_ratio = void_ratio();
+      p_.compacted_bulk_void_ratio = bulk_void_ratio();
       check_compaction();
     }
     enter(static_cast<ShearPhase>(static_cast<int>(p) + 1));

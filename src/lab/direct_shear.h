@@ -99,8 +99,18 @@ class DirectShearTest final : public LabTest {
   double cap_displacement() const;  // m, since the start of shear (up is positive)
   double servo_integral() const { return servo_.integral(); }  // Pa
   ShearSummary shear_summary() const { return summarise_shear(p_.rows); }
-  double achieved_void_ratio() const { return p_.compacted_void_ratio; }
+  double achieved_void_ratio() const { return p_.compacted_void_ratio; }  // whole specimen, after compaction
+  double achieved_bulk_void_ratio() const { return p_.compacted_bulk_void_ratio; }  // away from the walls
+  // Dr after compaction on the target's indices: own (bulk e), else lab (whole e).
   double achieved_relative_density() const;
+  // Dr after compaction on the grains' own indices (bulk e); NaN if they are unknown.
+  double achieved_own_relative_density() const;
+  // Dr after compaction on the lab's indices (whole-specimen e).
+  double achieved_lab_relative_density() const;
+  // Void ratio now in the bulk (lab/packing_density.h: kBulkMarginDiameters from walls, floor and cap).
+  double bulk_void_ratio() const;
+  // Lets compaction end at any density (for trial preparations; the caller judges them).
+  void accept_any_density() { accept_any_density_ = true; }
   std::int64_t phase_step(ShearPhase p) const { return p_.phase_start_step[static_cast<int>(p)]; }
 
  private:
@@ -109,6 +119,7 @@ class DirectShearTest final : public LabTest {
     CalmCounter calm;
     ForceWindow window;
     double compacted_void_ratio = 0;
+    double compacted_bulk_void_ratio = 0;
     double cap_z_at_shear = 0;
     double upper_x_at_shear = 0;
     double next_sample_strain = 0;
@@ -132,6 +143,7 @@ class DirectShearTest final : public LabTest {
   double dt_ = 0;
   double shear_speed_ = 0;
   Index grain_material_ = 0;
+  bool accept_any_density_ = false;
   std::vector<std::string> observer_columns_;
   SampleObserver observer_;
 };

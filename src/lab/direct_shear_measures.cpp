@@ -4,9 +4,11 @@
 #include "lab/direct_shear.h"
 
 #include "core/error.h"
+#include "lab/packing_density.h"
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace grainlab {
@@ -41,9 +43,24 @@ double DirectShearTest::void_ratio() const {
   return (v - solid_volume()) / solid_volume();
 }
 
-double DirectShearTest::achieved_relative_density() const {
+double DirectShearTest::bulk_void_ratio() const {
+  const Region r = bulk_region(spec_.box.length, spec_.box.width, world_.state.walls[Cap].x.z(), mean_diameter());
+  return void_ratio_in_region(world_.model, world_.state, r.lo, r.hi);
+}
+
+double DirectShearTest::achieved_own_relative_density() const {
+  const auto& s = spec_.specimen;
+  if (!spec_.own_indices_known()) return std::numeric_limits<double>::quiet_NaN();
+  return (s.own_e_max - p_.compacted_bulk_void_ratio) / (s.own_e_max - s.own_e_min);
+}
+
+double DirectShearTest::achieved_lab_relative_density() const {
   const auto& s = spec_.specimen;
   return (s.e_max - p_.compacted_void_ratio) / (s.e_max - s.e_min);
+}
+
+double DirectShearTest::achieved_relative_density() const {
+  return spec_.targets_own_indices() ? achieved_own_relative_density() : achieved_lab_relative_density();
 }
 
 double DirectShearTest::coordination_number() const {
@@ -88,10 +105,13 @@ void DirectShearTest::record_sample() {
 
 std::vector<SummaryValue> DirectShearTest::summary() const {
   const ShearSummary s = shear_summary();
-  return {{"", "shear_speed_m_per_s", shear_speed_},
+  std::vector<SummaryValue> v = {{"", "shear_speed_m_per_s", shear_speed_},
           {"", "mean_equivalent_diameter_m", mean_diameter()},
           {"preparation", "void_ratio", achieved_void_ratio()},
           {"preparation", "relative_density", achieved_relative_density()},
+          {"preparation", "bulk_void_ratio", achieved_bulk_void_ratio()},
+          {"preparation", "relative_density_lab", achieved_lab_relative_density()},
+          {"preparation", "deposition_friction", spec_.specimen.deposition_friction},
           {"preparation", "target_void_ratio", spec_.target_void_ratio()},
           {"peaks", "friction_angle_deg", s.peak_friction_angle_deg},
           {"peaks", "strain_at_peak_friction", s.strain_at_peak_friction},
@@ -101,6 +121,12 @@ std::vector<SummaryValue> DirectShearTest::summary() const {
           {"final", "friction_angle_deg", s.final_friction_angle_deg},
           {"final", "dilation_angle_deg", s.final_dilation_angle_deg},
           {"final", "void_ratio", s.final_void_ratio}};
+  if (spec_.own_indices_known()) {
+    v.push_back({"preparation", "relative_density_own", achieved_own_relative_density()});
+    v.push_back({"preparation", "own_e_min", spec_.specimen.own_e_min});
+    v.push_back({"preparation", "own_e_max", spec_.specimen.own_e_max});
+  }
+  return v;
 }
 
 std::string DirectShearTest::status_line() const {
@@ -111,6 +137,11 @@ std::string DirectShearTest::status_line() const {
 
 std::string DirectShearTest::phase_note() const {
   if (p_.phase != ShearPhase::Consolidate) return "";
+  if (spec_.targets_own_indices())
+    return fmt::format("prepared: bulk void ratio {:.3f} (target {:.3f}), Dr {:.0f} % on the grains' own indices "
+                       "(whole specimen e {:.3f})",
+                       achieved_bulk_void_ratio(), spec_.target_void_ratio(), 100 * achieved_relative_density(),
+                       achieved_void_ratio());
   return fmt::format("prepared: void ratio {:.3f} (target {:.3f}), Dr {:.0f} %", achieved_void_ratio(),
                      spec_.target_void_ratio(), 100 * achieved_relative_density());
 }
@@ -140,7 +171,7 @@ std::vector<std::uint8_t> DirectShearTest::save() const {
   p_.calm.save(b);
   p_.window.save(b);
   servo_.save(b);
-  b.f64(p_.compacted_void_ratio), b.f64(p_.cap_z_at_shear), b.f64(p_.upper_x_at_shear);
+  b.f64(p_.compacted_void_ratio), b.f64(p_.compacted_bulk_void_ratio), b.f64(p_.cap_z_at_shear), b.f64(p_.upper_x_at_shear);
   b.f64(p_.next_sample_strain);
   for (auto s : p_.phase_start_step) b.i64(s);
   b.u64(p_.rows.size());
@@ -158,7 +189,7 @@ void DirectShearTest::load(std::span<const std::uint8_t> bytes) {
   p_.calm.load(r);
   p_.window.load(r);
   servo_.load(r);
-  p_.compacted_void_ratio = r.f64(), p_.cap_z_at_shear = r.f64(), p_.upper_x_at_shear = r.f64();
+  p_.compacted_void_ratio = r.f64(), p_.compacted_bulk_void_ratio = r.f64(), p_.cap_z_at_shear = r.f64(), p_.upper_x_at_shear = r.f64();
   p_.next_sample_strain = r.f64();
   for (auto& s : p_.phase_start_step) s = r.i64();
   p_.rows.resize(r.count(8));

@@ -51,14 +51,19 @@ struct BoxSpec {
 };
 
 struct SpecimenSpec {
-  double relative_density = 0.96;  // target Dr = (e_max - e)/(e_max - e_min)
-  double e_max = 0.86;             // index void ratios of the sand (Griffin sand, paper section 3)
+  double relative_density = 0.96;  // target Dr = (e_max - e)/(e_max - e_min) on the indices below
+  std::string indices = "own";     // "own": Dr on the grains' own index voids (own_e_min/own_e_max,
+                                   // measured by `grainlab grains index` or by the run when not given);
+                                   // "lab": Dr on the lab's e_min/e_max of the real sand
+  double own_e_max = 0;            // the grains' own loosest void ratio; 0 = measure it (lab/index_densities.h)
+  double own_e_min = 0;            // the grains' own densest void ratio; 0 = measure it
+  double e_max = 0.86;             // lab index void ratios of the sand (Griffin sand, paper section 3)
   double e_min = 0.53;
   double void_ratio = -1;          // if > 0: target void ratio, overrides Dr
-  double tolerance = 0.02;         // accepted |e - e_target|
-  double deposition_friction = 0.12; // inter-grain friction while raining and compacting (lower: denser;
-                                     // 0.12 gives e = 0.55 with the default grains and box, 0.05 gives 0.51;
-                                     // frictionless grains of these shapes never come to rest)
+  double tolerance = 0.02;         // accepted |e - e_target| (void ratio and lab-index targets)
+  double relative_density_tolerance = 0.05;  // accepted |Dr - Dr_target| (own-index targets)
+  double deposition_friction = -1;   // inter-grain friction while raining and compacting (lower: denser);
+                                     // < 0: chosen by bisection over trial preparations (lab/preparation_search.h)
 };
 
 struct ConsolidationSpec {
@@ -101,11 +106,19 @@ struct DirectShearSpec {
   OutputSpec output;
   std::uint64_t seed = 1;
 
-  // Target void ratio from Dr or the explicit value.
+  // True when the target Dr is on the grains' own indices (not the lab's, not a void ratio).
+  bool targets_own_indices() const { return specimen.void_ratio <= 0 && specimen.indices == "own"; }
+  // True when the grains' own index void ratios are known.
+  bool own_indices_known() const { return specimen.own_e_min > 0 && specimen.own_e_max > specimen.own_e_min; }
+
+  // Target void ratio from Dr (on the own or the lab indices) or the explicit
+  // value. Own-index targets are bulk void ratios (away from the walls,
+  // lab/packing_density.h), the others the whole specimen's.
   double target_void_ratio() const {
-    return specimen.void_ratio > 0
-               ? specimen.void_ratio
-               : specimen.e_max - specimen.relative_density * (specimen.e_max - specimen.e_min);
+    if (specimen.void_ratio > 0) return specimen.void_ratio;
+    const bool own = specimen.indices == "own";
+    const double hi = own ? specimen.own_e_max : specimen.e_max, lo = own ? specimen.own_e_min : specimen.e_min;
+    return hi - specimen.relative_density * (hi - lo);
   }
 };
 

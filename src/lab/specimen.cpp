@@ -4,6 +4,7 @@
 #include "core/error.h"
 #include "core/rng.h"
 #include "lab/grain_library.h"
+#include "lab/specimen_budget.h"
 
 #include <algorithm>
 #include <cmath>
@@ -24,7 +25,10 @@ Specimen place_loose_specimen(World& world, const DirectShearSpec& spec, Index g
 
   const double L = spec.box.length, W = spec.box.width, H = spec.box.height;
   const double e_target = spec.target_void_ratio();
-  const int count = static_cast<int>(std::lround(L * W * H / ((1 + e_target) * mean_volume)));
+  const double wanted = specimen_grain_count(spec.box, e_target, mean_volume);
+  refuse_impossible_specimen(wanted, available_memory_bytes(), spec.box, sp.mean_diameter,
+                             "the specimen (box.length x box.width x box.height)");
+  const int count = static_cast<int>(std::lround(wanted));
   const double pitch = 2.0 * max_bound * 1.05;
   const int nx = static_cast<int>(L / pitch), ny = static_cast<int>(W / pitch);
   if (nx < 1 || ny < 1)

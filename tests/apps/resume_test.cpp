@@ -80,7 +80,7 @@ class Resume : public ::testing::Test {
     const fs::path p = dir_ / (name + ".toml");
     std::ofstream(p) << "seed = 5\n[grains]\nshapes = 4\nfaces = 120\n"
                      << "[box]\nlength = 0.003\nwidth = 0.003\nheight = 0.002\n"
-                     << "[specimen]\ndeposition_friction = 0.05\ntolerance = 1.0\n"
+                     << "[specimen]\nindices = \"lab\"\ndeposition_friction = 0.05\ntolerance = 1.0\n"
                      << "[shear]\nfinal_strain = 0.01\n[numerics]\nthreads = 1\n"
                      << "[output]\nsnapshot_interval = 0.004\nfolder = \"" << (dir_ / name).string() << "\"\n";
     return p;

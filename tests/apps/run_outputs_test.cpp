@@ -65,7 +65,7 @@ constexpr double kHeight = 2.5e-3;  // m, box.height of the run below
 const char* const kConfig =
     "seed = 5\n[grains]\nshapes = 4\nfaces = 120\n"
     "[box]\nlength = 0.0035\nwidth = 0.0035\nheight = 0.0025\n"
-    "[specimen]\ndeposition_friction = 0.05\ntolerance = 1.0\n"
+    "[specimen]\nindices = \"lab\"\ndeposition_friction = 0.05\ntolerance = 1.0\n"
     "[shear]\nfinal_strain = 0.02\n"
     "[numerics]\nthreads = 1\n"
     "[output]\nsnapshot_interval = 0.01\nfolder = ";

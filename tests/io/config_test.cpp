@@ -55,7 +55,7 @@ TEST(Config, EmptyFileGivesTheDefaults) { expect_same_spec(parse_config("", "emp
 
 TEST(Config, ToTomlRoundTripsEveryField) {
   const DirectShearSpec s = test::all_fields_changed();
-  ASSERT_EQ(config_differences(s, DirectShearSpec{}).size(), 43u) << "a field was left at its default";
+  ASSERT_EQ(config_differences(s, DirectShearSpec{}).size(), 47u) << "a field was left at its default";
   const DirectShearSpec back = parse_config(to_toml(s), "roundtrip.toml");
   expect_same_spec(back, s);
   EXPECT_TRUE(config_differences(back, s).empty());
@@ -194,6 +194,10 @@ INSTANTIATE_TEST_SUITE_P(
                       BadValue{"[specimen]\ne_max = 0.5\n", "specimen.e_max"},
                       BadValue{"[specimen]\nrelative_density = 1.2\n", "specimen.relative_density"},
                       BadValue{"[specimen]\nrelative_density = -0.1\n", "specimen.relative_density"},
+                      BadValue{"[specimen]\nindices = \"mine\"\n", "specimen.indices"},
+                      BadValue{"[specimen]\nown_e_max = 0.8\n", "specimen.own_e_max"},
+                      BadValue{"[specimen]\nown_e_min = 0.6\nown_e_max = 0.5\n", "specimen.own_e_max"},
+                      BadValue{"[specimen]\ndeposition_friction = -0.5\n", "specimen.deposition_friction"},
                       BadValue{"[box]\ngap = -1e-3\n", "box.gap"},
                       BadValue{"[box]\nlength = 0\n", "box.length"},
                       BadValue{"[box]\nwidth = -1\n", "box.width"},
@@ -208,6 +212,29 @@ INSTANTIATE_TEST_SUITE_P(
                       BadValue{"[numerics]\nthreads = -2\n", "numerics.threads"},
                       BadValue{"[output]\nstrain_interval = 0\n", "output.strain_interval"},
                       BadValue{"[output]\nfolder = \"\"\n", "output.folder"}));
+
+// A config written before the own index densities (issue 10) still parses:
+// its e_min/e_max are the lab's indices, its Dr is now on the grains' own
+// indices unless it says indices = "lab", and its fixed deposition friction
+// stays fixed (no search).
+TEST(Config, OldSpecimenKeysStillParse) {
+  const DirectShearSpec s = parse_config(
+      "[specimen]\nrelative_density = 0.9\ne_max = 0.9\ne_min = 0.6\ntolerance = 0.03\n"
+      "deposition_friction = 0.1\n", "old.toml");
+  EXPECT_EQ(s.specimen.e_max, 0.9);
+  EXPECT_EQ(s.specimen.e_min, 0.6);
+  EXPECT_EQ(s.specimen.deposition_friction, 0.1);
+  EXPECT_EQ(s.specimen.indices, "own");
+  EXPECT_TRUE(s.targets_own_indices());
+  EXPECT_FALSE(s.own_indices_known());
+  const DirectShearSpec lab = parse_config("[specimen]\nindices = \"lab\"\nrelative_density = 0.5\n"
+                                           "e_max = 0.9\ne_min = 0.6\n", "lab.toml");
+  EXPECT_DOUBLE_EQ(lab.target_void_ratio(), 0.75);
+  const DirectShearSpec own = parse_config("[specimen]\nrelative_density = 0.5\nown_e_max = 0.8\n"
+                                           "own_e_min = 0.6\n", "own.toml");
+  EXPECT_DOUBLE_EQ(own.target_void_ratio(), 0.7);
+  EXPECT_EQ(own.specimen.deposition_friction, -1);  // default: chosen by bisection
+}
 
 TEST(Config, UnknownSandPreset) {
   const std::string msg = parse_error("[material]\npreset = \"grifin\"\n");

@@ -1,0 +1,82 @@
+// Own indices and deposition friction before a run (see run_preparation.h).
+#include "apps/run_preparation.h"
+
+#include "io/json.h"
+#include "io/preparation_files.h"
+#include "lab/index_densities.h"
+#include "lab/preparation_search.h"
+#include "lab/specimen_budget.h"
+
+#include <fmt/format.h>
+
+#include <cstdio>
+
+namespace grainlab::apps {
+
+namespace fs = std::filesystem;
+
+PreparedRun prepare_run(const DirectShearSpec& spec, const fs::path& out, bool resume) {
+  DirectShearSpec r = spec;
+  PreparedRun run;
+  const fs::path record_file = out / "preparation.json";
+  if (resume) {
+    if (fs::exists(record_file)) {
+      run.record = read_json_file(record_file);
+      r.specimen.own_e_min = run.record.value("own_e_min", r.specimen.own_e_min);
+      r.specimen.own_e_max = run.record.value("own_e_max", r.specimen.own_e_max);
+      r.specimen.deposition_friction = run.record.value("deposition_friction", r.specimen.deposition_friction);
+    }
+    run.test = make_lab_test("direct-shear", r);
+    return run;
+  }
+  check_specimen_fits(spec);
+  const auto print = [](const std::string& line) {
+    fmt::print("  {}\n", line);
+    std::fflush(stdout);
+  };
+  if (r.specimen.indices == "own" && !r.own_indices_known()) {
+    const fs::path cache = out / "index_densities.json";
+    if (const auto cached = cached_index_densities(cache, spec)) {
+      std::tie(r.specimen.own_e_min, r.specimen.own_e_max) = *cached;
+      fmt::print("own index void ratios from {}: e_min {:.4f}, e_max {:.4f}\n", cache.string(), r.specimen.own_e_min,
+                 r.specimen.own_e_max);
+      run.record["index_densities_file"] = cache.string();
+    } else {
+      IndexDensityOptions options;
+      options.seeds = 1;
+      fmt::print("measuring the grains' own index void ratios (box {} d_max across, 1 seed; "
+                 "`grainlab grains index` measures several seeds; set specimen.own_e_min/own_e_max to skip)\n",
+                 options.box_diameters);
+      const IndexDensities d = measure_index_densities(spec, options, print);
+      fs::create_directories(out);
+      write_index_densities(cache, spec, d);
+      if (!d.settled())
+        fmt::print("  warning: a preparation hit the step cap before it came to rest; the indices are what "
+                   "it reached\n");
+      r.specimen.own_e_min = d.e_min;
+      r.specimen.own_e_max = d.e_max;
+      run.record["index_densities"] = to_json(d);
+    }
+  }
+  if (r.specimen.deposition_friction < 0) {
+    fmt::print("choosing the deposition friction for the target ({}):\n",
+               r.targets_own_indices()
+                   ? fmt::format("Dr {:.2f} on the own indices e_min {:.4f}, e_max {:.4f}", r.specimen.relative_density,
+                                 r.specimen.own_e_min, r.specimen.own_e_max)
+                   : fmt::format("e {:.4f}", r.target_void_ratio()));
+    Preparation p = prepare_to_target(r, {}, print);
+    r.specimen.deposition_friction = p.friction;
+    run.record["trials"] = to_json(p.trials);
+    run.test = std::move(p.test);
+  } else {
+    run.test = make_lab_test("direct-shear", r);
+  }
+  run.record["own_e_min"] = r.specimen.own_e_min;
+  run.record["own_e_max"] = r.specimen.own_e_max;
+  run.record["deposition_friction"] = r.specimen.deposition_friction;
+  fs::create_directories(out);
+  write_json_file(record_file, run.record);
+  return run;
+}
+
+}  // namespace grainlab::apps

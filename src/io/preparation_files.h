@@ -1,0 +1,32 @@
+// The run folder's record of how the specimen was prepared:
+// index_densities.json (the grains' own e_min/e_max, with every preparation
+// and the key of the inputs they depend on, reused by later runs with the
+// same key) and preparation.json (the own indices and deposition friction
+// the run used, and the search's trials; --resume rebuilds the run from it).
+#pragma once
+
+#include "lab/index_densities.h"
+#include "lab/preparation_search.h"
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <optional>
+
+namespace grainlab {
+
+// The inputs the own indices depend on (grains, material, consolidation
+// stress, numerics, seed) as one JSON string.
+std::string index_cache_key(const DirectShearSpec& spec);
+
+nlohmann::json to_json(const IndexDensities& d);
+nlohmann::json to_json(const std::vector<PreparationTrial>& trials);
+
+// e_min, e_max from an index_densities.json whose key matches spec's; nullopt otherwise.
+std::optional<std::pair<double, double>> cached_index_densities(const std::filesystem::path& file,
+                                                                const DirectShearSpec& spec);
+
+// Writes index_densities.json (with the key).
+void write_index_densities(const std::filesystem::path& file, const DirectShearSpec& spec, const IndexDensities& d);
+
+}  // namespace grainlab

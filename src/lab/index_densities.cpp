@@ -1,0 +1,94 @@
+// The grains' own index void ratios (method in index_densities.h).
+#include "lab/index_densities.h"
+
+#include "core/error.h"
+#include "core/timer.h"
+#include "lab/direct_shear.h"
+#include "lab/packing_density.h"
+
+#include <algorithm>
+#include <fmt/format.h>
+
+namespace grainlab {
+
+bool IndexDensities::settled() const {
+  for (const auto* list : {&dense, &loose})
+    for (const IndexPreparation& p : *list)
+      if (!p.settled) return false;
+  return true;
+}
+
+IndexPreparation prepare_index_specimen(const DirectShearSpec& spec, const IndexDensityOptions& o, bool dense,
+                                        std::uint64_t seed) {
+  if (o.box_diameters < 4 || o.height_diameters < 4)
+    input_error("index densities: a box of {} x {} grain diameters is too small to have a bulk away from the "
+                "walls; use at least 4 (10 or more for the material's index voids)",
+                o.box_diameters, o.height_diameters);
+  DirectShearSpec s = spec;
+  s.seed = seed;
+  s.box.length = s.box.width = o.box_diameters * spec.grains.d_max;
+  s.box.height = o.height_diameters * spec.grains.d_max;
+  s.box.gap = 0;
+  s.specimen.void_ratio = 0.7;  // only sets the grain count
+  s.specimen.indices = "lab";
+  s.specimen.deposition_friction = dense ? 0.0 : o.loose_friction;
+  DirectShearTest t(s);
+  t.accept_any_density();
+  t.world().settings.threads = spec.numerics.threads;
+  Stopwatch clock;
+  const ShearPhase goal = dense ? ShearPhase::Consolidate : ShearPhase::Compact;
+  const std::int64_t cap = std::min<std::int64_t>(o.max_steps, 399000);
+  World& w = t.world();
+  while (t.phase() < goal && w.state.step - t.phase_step(t.phase()) < cap) t.advance(1000);
+
+  IndexPreparation p;
+  p.seed = seed;
+  p.friction = s.specimen.deposition_friction;
+  p.settled = t.phase() >= goal;
+  p.steps = w.state.step;
+  p.grains = static_cast<int>(w.model.bodies.size());
+  const double d = t.mean_diameter(), L = s.box.length;
+  double top = 0;  // the cap, or the highest grain top when there is none yet
+  if (dense && t.phase() >= ShearPhase::Compact) {
+    top = w.state.walls[Cap].x.z();
+  } else {
+    for (std::size_t i = 0; i < w.model.bodies.size(); ++i)
+      top = std::max(top, w.state.bodies[i].x.z() + w.model.bodies[i].bounding_radius);
+  }
+  const Region r = bulk_region(L, L, dense ? top : top - d, d);
+  p.void_ratio = void_ratio_in_region(w.model, w.state, r.lo, r.hi);
+  p.whole_void_ratio = L * L * top / t.solid_volume() - 1;
+  p.wall_s = clock.seconds();
+  return p;
+}
+
+IndexDensities measure_index_densities(const DirectShearSpec& spec, const IndexDensityOptions& o,
+                                       const IndexProgress& progress) {
+  if (o.seeds < 1) input_error("index densities: seeds = {}; use at least 1 (3 to see the spread)", o.seeds);
+  IndexDensities r;
+  r.box_length = o.box_diameters * spec.grains.d_max;
+  r.box_height = o.height_diameters * spec.grains.d_max;
+  for (int dense = 1; dense >= 0; --dense) {
+    auto& list = dense ? r.dense : r.loose;
+    for (int k = 0; k < o.seeds; ++k) {
+      list.push_back(prepare_index_specimen(spec, o, dense, spec.seed + k));
+      const IndexPreparation& p = list.back();
+      if (progress)
+        progress(fmt::format("{} (friction {:g}) seed {}: bulk e = {:.4f}, whole-box e = {:.4f}, {} steps, "
+                             "{:.0f} s{}",
+                             dense ? "e_min" : "e_max", p.friction, p.seed, p.void_ratio, p.whole_void_ratio,
+                             p.steps, p.wall_s, p.settled ? "" : " (NOT settled: step cap reached)"));
+    }
+    double sum = 0, lo = list.front().void_ratio, hi = lo;
+    for (const IndexPreparation& p : list) {
+      sum += p.void_ratio;
+      lo = std::min(lo, p.void_ratio), hi = std::max(hi, p.void_ratio);
+    }
+    (dense ? r.e_min : r.e_max) = sum / list.size();
+    (dense ? r.e_min_spread : r.e_max_spread) = hi - lo;
+  }
+  r.grains = r.dense.front().grains;
+  return r;
+}
+
+}  // namespace grainlab

@@ -1,0 +1,134 @@
+// Deposition friction by bisection (method in preparation_search.h).
+#include "lab/preparation_search.h"
+
+#include "core/error.h"
+#include "core/timer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+#include <limits>
+#include <optional>
+
+namespace grainlab {
+
+namespace {
+
+constexpr double kU = 0.1;  // u = mu / (mu + kU)
+
+double to_u(double mu) { return mu / (mu + kU); }
+double to_mu(double u) { return kU * u / (1 - u); }
+
+// e of a trial as the target judges it, and its Dr on the target's indices.
+double judged_void_ratio(const DirectShearSpec& spec, const DirectShearTest& t) {
+  return spec.targets_own_indices() ? t.achieved_bulk_void_ratio() : t.achieved_void_ratio();
+}
+
+double judged_relative_density(const DirectShearSpec& spec, double e) {
+  const auto& s = spec.specimen;
+  if (spec.targets_own_indices()) return (s.own_e_max - e) / (s.own_e_max - s.own_e_min);
+  return (s.e_max - e) / (s.e_max - s.e_min);
+}
+
+}  // namespace
+
+std::unique_ptr<DirectShearTest> trial_preparation(const DirectShearSpec& spec, double mu, PreparationTrial& out) {
+  DirectShearSpec s = spec;
+  s.specimen.deposition_friction = mu;
+  Stopwatch clock;
+  auto t = std::make_unique<DirectShearTest>(s);
+  t->accept_any_density();
+  t->world().settings.threads = spec.numerics.threads;
+  while (t->phase() < ShearPhase::Consolidate) t->advance(1000);
+  out.friction = mu;
+  out.void_ratio = judged_void_ratio(spec, *t);
+  out.relative_density = judged_relative_density(spec, out.void_ratio);
+  out.steps = t->world().state.step;
+  out.wall_s = clock.seconds();
+  return t;
+}
+
+Preparation prepare_to_target(const DirectShearSpec& spec, const PreparationSearchOptions& o,
+                              const PreparationProgress& progress) {
+  if (spec.targets_own_indices() && !spec.own_indices_known())
+    input_error("the preparation search needs the grains' own index void ratios for a Dr target on them: set "
+                "specimen.own_e_min/own_e_max (`grainlab grains index`), or let `grainlab run` measure them");
+  const double target = spec.target_void_ratio();
+  const bool own = spec.targets_own_indices();
+  const auto hit = [&](const PreparationTrial& t) {
+    return own ? std::abs(t.relative_density - spec.specimen.relative_density) <= spec.specimen.relative_density_tolerance
+               : std::abs(t.void_ratio - target) <= spec.specimen.tolerance;
+  };
+  const std::string goal =
+      own ? fmt::format("Dr {:.2f} +- {:.2f} on the grains' own indices (bulk e = {:.3f})",
+                        spec.specimen.relative_density, spec.specimen.relative_density_tolerance, target)
+          : fmt::format("e = {:.3f} +- {:.3f}", target, spec.specimen.tolerance);
+
+  Preparation p;
+  double u_lo = 0, u_hi = to_u(o.max_friction);
+  std::optional<double> e_lo, e_hi;  // measured e at the bracket's ends
+  double u = 0;
+  if (spec.own_indices_known()) {
+    const auto& s = spec.specimen;
+    const double f = (target - s.own_e_min) / (s.own_e_max - s.own_e_min);
+    u = std::clamp(f, 0.05, 0.95) * u_hi;
+  } else {
+    u = to_u(0.12);
+  }
+  std::unique_ptr<DirectShearTest> best;
+  double best_miss = std::numeric_limits<double>::infinity();
+  std::string why;
+  for (int k = 0; k < o.max_trials; ++k) {
+    PreparationTrial trial;
+    std::unique_ptr<DirectShearTest> t = trial_preparation(spec, to_mu(u), trial);
+    p.trials.push_back(trial);
+    if (progress)
+      progress(fmt::format("trial {}: deposition friction {:.4f} -> e = {:.4f}{} ({} steps, {:.0f} s)", k + 1,
+                           trial.friction, trial.void_ratio,
+                           std::isnan(trial.relative_density) ? "" : fmt::format(", Dr {:.3f}", trial.relative_density),
+                           trial.steps, trial.wall_s));
+    if (hit(trial)) {
+      p.test = std::move(t);
+      p.friction = trial.friction;
+      return p;
+    }
+    const double miss = std::abs(trial.void_ratio - target);
+    if (miss < best_miss) best_miss = miss, best = std::move(t);
+    if (trial.void_ratio < target) u_lo = u, e_lo = trial.void_ratio;
+    else u_hi = u, e_hi = trial.void_ratio;
+    // The ends: frictionless still too loose, or the loosest still too dense.
+    if (u == 0 && trial.void_ratio > target) {
+      why = "frictionless deposition and compaction, the densest this preparation makes, is still looser than "
+            "the target";
+      break;
+    }
+    if (u >= to_u(o.max_friction) && trial.void_ratio < target) {
+      why = fmt::format("deposition at friction {:g}, the loosest this search tries, is still denser than the "
+                        "target (the compaction under the cap packs it)",
+                        o.max_friction);
+      break;
+    }
+    const double u_max = to_u(o.max_friction);
+    if (e_lo && e_hi) {
+      const double f = (target - *e_lo) / (*e_hi - *e_lo);
+      u = u_lo + std::clamp(f, 0.1, 0.9) * (u_hi - u_lo);
+    } else if (e_hi) {  // every trial too loose: towards frictionless
+      u = u_hi <= 0.5 * u_max ? 0 : 0.5 * u_hi;
+    } else {  // every trial too dense: towards the loosest
+      u = u_lo >= 0.5 * u_max ? u_max : 0.5 * (u_lo + u_max);
+    }
+  }
+  if (why.empty()) why = fmt::format("{} trials did not land within the tolerance (the packing's scatter at a "
+                                     "given friction may be as large as the tolerance)",
+                                     p.trials.size());
+  std::string list;
+  for (const PreparationTrial& t : p.trials) list += fmt::format(" mu {:.4f} -> e {:.4f};", t.friction, t.void_ratio);
+  throw RunError(fmt::format(
+      "specimen preparation could not reach {}: {}. Trials:{} closest e = {:.4f}. To fix: set a reachable "
+      "target (specimen.relative_density or specimen.void_ratio), allow a wider specimen.{}, or make the box "
+      "larger (a small box's walls loosen the packing)",
+      goal, why, list, (best ? judged_void_ratio(spec, *best) : 0.0),
+      own ? "relative_density_tolerance" : "tolerance"));
+}
+
+}  // namespace grainlab
