@@ -120,20 +120,25 @@ bool DirectShearTest::check_rest(ShearPhase p) {
   return rest;
 }
 
-void DirectShearTest::check_compaction() const {
-  const double e = p_.compacted_void_ratio, target = spec_.target_void_ratio();
+void DirectShearTest::check_preparation(double e, const char* when) const {
+  const double target = spec_.target_void_ratio();
   if (std::abs(e - target) <= spec_.specimen.tolerance) return;
+  const auto& s = spec_.specimen;
   throw RunError(fmt::format(
-      "specimen preparation reached void ratio e = {:.3f} (Dr = {:.0f} %) under {:.0f} kPa, but "
+      "specimen preparation reached void ratio e = {:.3f} (Dr = {:.0f} %) {} under {:.0f} kPa, but "
       "the target is e = {:.3f} +- {:.3f} (Dr = {:.0f} %). {}",
-      e, 100 * achieved_relative_density(), spec_.consolidation.normal_stress * 1e-3, target,
+      e, 100 * (s.e_max - e) / (s.e_max - s.e_min), when, spec_.consolidation.normal_stress * 1e-3, target,
       spec_.specimen.tolerance, 100 * spec_.specimen.relative_density,
       e > target ? (spec_.specimen.deposition_friction > 0
                         ? "Lower specimen.deposition_friction for a denser specimen, or set a reachable target."
                         : "Deposition is already frictionless, the densest this procedure makes: these "
                           "grains in this box do not pack that densely. Raise specimen.e_min/e_max or "
                           "set specimen.void_ratio to a reachable value.")
-                 : "Raise specimen.deposition_friction for a looser specimen."));
+                 : spec_.specimen.deposition_friction > spec_.material.grain.friction
+                       ? "The specimen was deposited with more friction than the test's and collapsed when "
+                         "the test friction came back: a looser specimen than this needs grains with more "
+                         "friction."
+                       : "Raise specimen.deposition_friction for a looser specimen."));
 }
 
 bool DirectShearTest::advance(int max_steps) {
@@ -154,8 +159,11 @@ bool DirectShearTest::advance(int max_steps) {
     if (world_.state.step % kCheckEvery != 0 || !check_rest(p)) continue;
     if (p == ShearPhase::Compact) {
       p_.compacted_void_ratio = void_ratio();
-      check_compaction();
+      check_preparation(p_.compacted_void_ratio, "after compaction");
     }
+    // What is sheared: a specimen deposited with more friction than the
+    // test's compacts further once the test friction is back.
+    if (p == ShearPhase::Consolidate) check_preparation(void_ratio(), "after consolidation");
     enter(static_cast<ShearPhase>(static_cast<int>(p) + 1));
     return true;  // a phase ended
   }

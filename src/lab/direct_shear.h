@@ -13,7 +13,9 @@
 //                reached is checked against the target (RunError if it misses);
 //   Consolidate  the test friction is back (the Model's: the deposition
 //                settings were phase overrides) and the servo holds the stress
-//                until the specimen is at rest again;
+//                until the specimen is at rest again; the void ratio is checked
+//                again (a specimen deposited with more friction than the test's
+//                collapses part way here) and is the specimen's e and Dr;
 //   Shear        the upper half moves at constant speed to the final strain, the
 //                cap holding the normal stress. A sample is recorded every
 //                output.strain_interval of shear strain.
@@ -99,7 +101,10 @@ class DirectShearTest final : public LabTest {
   double cap_displacement() const;  // m, since the start of shear (up is positive)
   double servo_integral() const { return servo_.integral(); }  // Pa
   ShearSummary shear_summary() const { return summarise_shear(p_.rows); }
-  double achieved_void_ratio() const { return p_.compacted_void_ratio; }
+  // The specimen's void ratio: at the start of shear (after consolidation,
+  // where a specimen deposited with more friction than the test's collapses
+  // part way), before that at the end of compaction.
+  double achieved_void_ratio() const;
   double achieved_relative_density() const;
   std::int64_t phase_step(ShearPhase p) const { return p_.phase_start_step[static_cast<int>(p)]; }
 
@@ -120,7 +125,8 @@ class DirectShearTest final : public LabTest {
   void enter(ShearPhase p);
   void apply_phase_overrides();
   bool check_rest(ShearPhase p);
-  void check_compaction() const;
+  // RunError if e (reached `when`) misses the target void ratio.
+  void check_preparation(double e, const char* when) const;
   void record_sample();
   double box_area() const { return spec_.box.length * spec_.box.width; }
 

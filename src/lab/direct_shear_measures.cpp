@@ -41,9 +41,14 @@ double DirectShearTest::void_ratio() const {
   return (v - solid_volume()) / solid_volume();
 }
 
+double DirectShearTest::achieved_void_ratio() const {
+  if (p_.phase < ShearPhase::Shear) return p_.compacted_void_ratio;
+  return (box_area() * p_.cap_z_at_shear - solid_volume()) / solid_volume();
+}
+
 double DirectShearTest::achieved_relative_density() const {
   const auto& s = spec_.specimen;
-  return (s.e_max - p_.compacted_void_ratio) / (s.e_max - s.e_min);
+  return (s.e_max - achieved_void_ratio()) / (s.e_max - s.e_min);
 }
 
 double DirectShearTest::coordination_number() const {
@@ -91,6 +96,7 @@ std::vector<SummaryValue> DirectShearTest::summary() const {
   return {{"", "shear_speed_m_per_s", shear_speed_},
           {"", "mean_equivalent_diameter_m", mean_diameter()},
           {"preparation", "void_ratio", achieved_void_ratio()},
+          {"preparation", "compacted_void_ratio", p_.compacted_void_ratio},
           {"preparation", "relative_density", achieved_relative_density()},
           {"preparation", "target_void_ratio", spec_.target_void_ratio()},
           {"peaks", "friction_angle_deg", s.peak_friction_angle_deg},
