@@ -10,16 +10,17 @@
 // Per sand (Table 1 material through lab/sand_presets.h):
 //   1. own index void ratios, in the study's own box with the study's grain
 //      count (the count of specimen.void_ratio = the sand preset's Dr 0.9
-//      target), each the void ratio after consolidation (what would be
-//      sheared): e_min = frictionless deposition under 100 g and compaction
-//      under the 100 kPa cap, the densest this method makes (faceted grains:
-//      deposition friction 0.02 unless --emin-friction says otherwise, as
-//      frictionless faceted grains did not come to rest before the resting
-//      contact fix of issue 10 item 1); e_max = deposition and compaction with
-//      the sand's own friction, the loosest it makes: a deposition with more
-//      friction than the test's collapses part way once the test friction is
-//      back (spheres: e 0.885 -> 0.837), and spheres deposited with friction
-//      1.0 never settle (their spin does not decay);
+//      target): e_min = frictionless deposition under 100 g and compaction
+//      under the 100 kPa cap, after consolidation, the densest this method
+//      makes (faceted grains: deposition friction 0.02 unless --emin-friction
+//      says otherwise, as frictionless faceted grains did not come to rest
+//      before the resting contact fix of issue 10 item 1); e_max = deposition
+//      and compaction with friction 0.5, after compaction, the loosest it
+//      makes (spheres deposited with friction 1.0 never settle: their spin
+//      does not decay; with the sand's own friction glass beads span no range:
+//      e 0.8607 frictionless, 0.8630 at 0.12 in the quick box). A specimen
+//      deposited with more friction than the test's collapses part way in
+//      consolidation, so the bisection below stays at or under the test's;
 //   2. the deposition friction that gives Dr = 0.9 on those indices, by
 //      bisection over preparations (e falls as the friction falls), accepted
 //      within Dr +- 0.05;
@@ -33,7 +34,7 @@
 //
 // The full study (1000 faces, box 12 x 12 x 6 largest grains) takes hours:
 // --estimate prints an estimate from the measured step rate of each sand's
-// deposition. --quick (a 4 x 4 x 2.6 mm box, 4 shapes of 60 faces, strains
+// deposition. --quick (a 4 x 4 x 2.6 mm box, 4 shapes of 100 faces, strains
 // 6 % and 12 %) checks the whole chain in minutes. DIR/study.json holds what
 // the runs do not: the indices, the bisection, the wall times.
 #include "core/error.h"
@@ -92,7 +93,7 @@ DirectShearSpec base_spec(const Options& o, const Sand& s) {
     spec.box.length = spec.box.width = 4.0e-3;
     spec.box.height = 2.6e-3;
     spec.grains.shapes = 4;
-    spec.grains.faces = 60;
+    spec.grains.faces = 100;  // the config's least
   } else {
     // 12 largest grains across, 6 high (the issue; ASTM D3080 asks 10 x 6).
     spec.box.length = spec.box.width = 12 * spec.grains.d_max;
@@ -123,14 +124,14 @@ struct Prep {
 };
 
 // Deposition and compaction only; the void ratio after compaction.
-Prep prepare(const DirectShearSpec& spec) {
+Prep prepare(const DirectShearSpec& spec, ShearPhase until = ShearPhase::Shear) {
   Prep p;
   Stopwatch clock;
   try {
     DirectShearTest t(spec);
     t.world().settings.threads = spec.numerics.threads;
     p.grains = t.world().model.bodies.size();
-    while (t.phase() < ShearPhase::Shear) t.advance(1000);
+    while (t.phase() < until) t.advance(1000);
     p.e = t.achieved_void_ratio();
     p.steps = t.world().state.step;
   } catch (const RunError& e) {
@@ -141,9 +142,9 @@ Prep prepare(const DirectShearSpec& spec) {
   return p;
 }
 
-Prep prepare_with_friction(DirectShearSpec spec, double friction) {
+Prep prepare_with_friction(DirectShearSpec spec, double friction, ShearPhase until = ShearPhase::Shear) {
   spec.specimen.deposition_friction = friction;
-  return prepare(spec);
+  return prepare(spec, until);
 }
 
 nlohmann::json prep_json(const Prep& p, double friction) {
@@ -180,9 +181,9 @@ nlohmann::json prepare_sand(const Options& o, const Sand& s, DirectShearSpec& sp
   fmt::print("{}: {} grains of {} faces, box {:.2f} x {:.2f} x {:.2f} mm\n", s.name, spec.grains.preset,
              spec.grains.faces, spec.box.length * 1e3, spec.box.width * 1e3, spec.box.height * 1e3);
   const double min_friction = spec.grains.preset == "glass-beads" ? 0.0 : o.emin_friction;
-  const double loose_friction = spec.material.grain.friction;
+  const double loose_friction = 0.5;
   const Prep dense = prepare_with_friction(spec, min_friction);
-  const Prep loose = prepare_with_friction(spec, loose_friction);
+  const Prep loose = prepare_with_friction(spec, loose_friction, ShearPhase::Consolidate);
   if (!dense.error.empty() || !loose.error.empty())
     throw RunError(fmt::format("{}: index preparation failed: {}{}", s.name, dense.error, loose.error));
   const double e_min = dense.e, e_max = loose.e;
@@ -198,7 +199,7 @@ nlohmann::json prepare_sand(const Options& o, const Sand& s, DirectShearSpec& sp
 
   // Bisection on the deposition friction for Dr = 0.9.
   const double e_target = e_max - kTargetDr * (e_max - e_min);
-  double lo = min_friction, hi = loose_friction;  // e(lo) <= e_target <= e(hi)
+  double lo = min_friction, hi = spec.material.grain.friction;  // e(lo) <= e_target, hopefully <= e(hi)
   double friction = NAN, e = NAN;
   nlohmann::json trials = nlohmann::json::array();
   for (int it = 0; it < (o.quick ? 4 : 7); ++it) {

@@ -164,7 +164,9 @@ def main(argv=None):
         return 1
     out_dir = Path(a.out) if a.out else study_dir / "report"
     try:
-        sands = [Sand(study_dir, s) for s in study.get("sands", []) if "run_folder" in s]
+        finished = lambda e: "run_folder" in e and (study_dir / e["run_folder"] / "run.json").is_file()  # noqa: E731
+        sands = [Sand(study_dir, s) for s in study.get("sands", []) if finished(s)]
+        unfinished = [s.get("name", "?") for s in study.get("sands", []) if not finished(s)]
         damping = []
         for d in study.get("damping", []):
             if "run_folder" in d and (study_dir / d["run_folder"] / "run.json").is_file():
@@ -179,7 +181,7 @@ def main(argv=None):
         return 1
     rp.prepare_out(out_dir, STUDY_PNGS)
 
-    checks = []
+    checks = [f"no finished run for: {', '.join(unfinished)}"] if unfinished else []
     for attr, falling, what in (("phi_p", True, "peak friction angle"), ("psi_p", True, "peak dilation angle"),
                                 ("psi_fabric", True, "peak fabric factor Psi_p"),
                                 ("rotation", False, "mean rotation at 10 %"), ("cn", False, "coordination number at 10 %")):
