@@ -38,7 +38,7 @@ import report as rp  # noqa: E402  (scripts/report.py: Run, figures, page)
 
 plt = rp.plt
 STUDY_PNGS = rp.COMPARISON_PNGS + ["micro_vs_roundness.png", "damping.png", "angular_20.png"]
-AT_STRAIN = 0.10  # the comparisons' strain (the paper's final strain)
+AT_STRAIN = 0.10  # the comparisons' strain (the paper's final strain; a shorter run: its end)
 
 
 def value_at(run, column, strain=AT_STRAIN):
@@ -74,8 +74,8 @@ def trend(sands, attr, falling, what):
     vals = [getattr(s, attr) for s in have]
     ok = len(vals) >= 2 and all((b < a) if falling else (b > a) for a, b in zip(vals, vals[1:]))
     numbers = ", ".join(f"{s.name} (R {s.R:.2f}) {getattr(s, attr):.3g}" for s in have)
-    return (f"{what} {'falls' if falling else 'rises'} strictly with roundness: "
-            f"{'holds' if ok else 'DOES NOT HOLD'} ({numbers})"), ok
+    verdict = "holds" if ok else "DOES NOT HOLD" if len(vals) >= 2 else "cannot tell (fewer than two runs)"
+    return f"{what} {'falls' if falling else 'rises'} strictly with roundness: {verdict} ({numbers})", ok
 
 
 def fig_micro(sands, out_dir):
