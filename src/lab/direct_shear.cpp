@@ -132,29 +132,32 @@ bool DirectShearTest::check_rest(ShearPhase p) {
   return rest;
 }
 
-void DirectShearTest::check_compaction() const {
+void DirectShearTest::check_preparation(double e_whole, double e_bulk, const char* when) const {
   if (accept_any_density_) return;
+  const auto& s = spec_.specimen;
   const bool own = spec_.targets_own_indices();
-  const double e = own ? p_.compacted_bulk_void_ratio : p_.compacted_void_ratio, target = spec_.target_void_ratio();
-  const double dr = achieved_relative_density(), dr_error = dr - spec_.specimen.relative_density;
-  if (own ? std::abs(dr_error) <= spec_.specimen.relative_density_tolerance
-          : std::abs(e - target) <= spec_.specimen.tolerance)
+  const double e = own ? e_bulk : e_whole, target = spec_.target_void_ratio();
+  const double dr = own ? (s.own_e_max - e) / (s.own_e_max - s.own_e_min) : (s.e_max - e) / (s.e_max - s.e_min);
+  if (own ? std::abs(dr - s.relative_density) <= s.relative_density_tolerance : std::abs(e - target) <= s.tolerance)
     return;
   throw RunError(fmt::format(
-      "specimen preparation reached {}void ratio e = {:.3f} (Dr = {:.0f} % on the {} indices) under {:.0f} kPa, "
+      "specimen preparation reached {}void ratio e = {:.3f} (Dr = {:.0f} % on the {} indices) {} under {:.0f} kPa, "
       "but the target is {} (Dr = {:.0f} %). {}",
-      own ? "bulk " : "", e, 100 * dr, own ? "grains' own" : "lab's", spec_.consolidation.normal_stress * 1e-3,
-      own ? fmt::format("Dr within +-{:.2f}", spec_.specimen.relative_density_tolerance)
-          : fmt::format("e = {:.3f} +- {:.3f}", target, spec_.specimen.tolerance),
-      100 * spec_.specimen.relative_density,
-      e > target ? (spec_.specimen.deposition_friction > 0
+      own ? "bulk " : "", e, 100 * dr, own ? "grains' own" : "lab's", when, spec_.consolidation.normal_stress * 1e-3,
+      own ? fmt::format("Dr within +-{:.2f}", s.relative_density_tolerance)
+          : fmt::format("e = {:.3f} +- {:.3f}", target, s.tolerance),
+      100 * s.relative_density,
+      e > target ? (s.deposition_friction > 0
                         ? "Lower specimen.deposition_friction for a denser specimen (or set it to -1 to "
                           "have it chosen by bisection), or set a reachable target."
                         : "Deposition is already frictionless, the densest this procedure makes: these "
                           "grains in this box do not pack that densely. Lower specimen.relative_density "
                           "or set specimen.void_ratio to a reachable value.")
-                 : "Raise specimen.deposition_friction for a looser specimen (or set it to -1 to have it "
-                   "chosen by bisection)."));
+      : s.deposition_friction > spec_.material.grain.friction
+          ? "The specimen was deposited with more friction than the test's and collapsed when the test "
+            "friction came back: a looser specimen than this needs grains with more friction."
+          : "Raise specimen.deposition_friction for a looser specimen (or set it to -1 to have it chosen by "
+            "bisection)."));
 }
 
 bool DirectShearTest::advance(int max_steps) {
@@ -176,8 +179,11 @@ bool DirectShearTest::advance(int max_steps) {
     if (p == ShearPhase::Compact) {
       p_.compacted_void_ratio = void_ratio();
       p_.compacted_bulk_void_ratio = bulk_void_ratio();
-      check_compaction();
+      check_preparation(p_.compacted_void_ratio, p_.compacted_bulk_void_ratio, "after compaction");
     }
+    // What is sheared: a specimen deposited with more friction than the
+    // test's compacts further once the test friction is back.
+    if (p == ShearPhase::Consolidate) check_preparation(void_ratio(), bulk_void_ratio(), "after consolidation");
     enter(static_cast<ShearPhase>(static_cast<int>(p) + 1));
     return true;  // a phase ended
   }

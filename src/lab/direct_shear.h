@@ -13,7 +13,9 @@
 //                reached is checked against the target (RunError if it misses);
 //   Consolidate  the test friction is back (the Model's: the deposition
 //                settings were phase overrides) and the servo holds the stress
-//                until the specimen is at rest again;
+//                until the specimen is at rest again; the void ratio is checked
+//                again (a specimen deposited with more friction than the test's
+//                collapses part way here) and is the specimen's e and Dr;
 //   Shear        the upper half moves at constant speed to the final strain, the
 //                cap holding the normal stress. A sample is recorded every
 //                output.strain_interval of shear strain.
@@ -99,9 +101,12 @@ class DirectShearTest final : public LabTest {
   double cap_displacement() const;  // m, since the start of shear (up is positive)
   double servo_integral() const { return servo_.integral(); }  // Pa
   ShearSummary shear_summary() const { return summarise_shear(p_.rows); }
-  double achieved_void_ratio() const { return p_.compacted_void_ratio; }  // whole specimen, after compaction
+  // The specimen's void ratio (whole specimen): at the start of shear (after
+  // consolidation, where a specimen deposited with more friction than the
+  // test's collapses part way), before that at the end of compaction.
+  double achieved_void_ratio() const;
   double achieved_bulk_void_ratio() const { return p_.compacted_bulk_void_ratio; }  // away from the walls
-  // Dr after compaction on the target's indices: own (bulk e), else lab (whole e).
+  // Dr on the target's indices: own (bulk e after compaction), else lab (achieved_void_ratio()).
   double achieved_relative_density() const;
   // Dr after compaction on the grains' own indices (bulk e); NaN if they are unknown.
   double achieved_own_relative_density() const;
@@ -131,7 +136,9 @@ class DirectShearTest final : public LabTest {
   void enter(ShearPhase p);
   void apply_phase_overrides();
   bool check_rest(ShearPhase p);
-  void check_compaction() const;
+  // Throws RunError (what was reached, how to fix it) if the whole (lab-index
+  // or void-ratio target) or bulk (own-index target) void ratio misses the target.
+  void check_preparation(double e_whole, double e_bulk, const char* when) const;
   void record_sample();
   double box_area() const { return spec_.box.length * spec_.box.width; }
 

@@ -48,6 +48,11 @@ double DirectShearTest::bulk_void_ratio() const {
   return void_ratio_in_region(world_.model, world_.state, r.lo, r.hi);
 }
 
+double DirectShearTest::achieved_void_ratio() const {
+  if (p_.phase < ShearPhase::Shear) return p_.compacted_void_ratio;
+  return (box_area() * p_.cap_z_at_shear - solid_volume()) / solid_volume();
+}
+
 double DirectShearTest::achieved_own_relative_density() const {
   const auto& s = spec_.specimen;
   if (!spec_.own_indices_known()) return std::numeric_limits<double>::quiet_NaN();
@@ -56,7 +61,7 @@ double DirectShearTest::achieved_own_relative_density() const {
 
 double DirectShearTest::achieved_lab_relative_density() const {
   const auto& s = spec_.specimen;
-  return (s.e_max - p_.compacted_void_ratio) / (s.e_max - s.e_min);
+  return (s.e_max - achieved_void_ratio()) / (s.e_max - s.e_min);
 }
 
 double DirectShearTest::achieved_relative_density() const {
@@ -108,6 +113,7 @@ std::vector<SummaryValue> DirectShearTest::summary() const {
   std::vector<SummaryValue> v = {{"", "shear_speed_m_per_s", shear_speed_},
           {"", "mean_equivalent_diameter_m", mean_diameter()},
           {"preparation", "void_ratio", achieved_void_ratio()},
+          {"preparation", "compacted_void_ratio", p_.compacted_void_ratio},
           {"preparation", "relative_density", achieved_relative_density()},
           {"preparation", "bulk_void_ratio", achieved_bulk_void_ratio()},
           {"preparation", "relative_density_lab", achieved_lab_relative_density()},
