@@ -13,6 +13,7 @@ packages=(
   libcli11-dev           # command line
   nlohmann-json3-dev     # JSON output
   libfmt-dev             # formatting
+  zlib1g-dev             # compressed ParaView files
   libgtest-dev libgmock-dev  # tests
   libbenchmark-dev       # micro benchmarks
   libomp-dev             # OpenMP (gcc ships its own libgomp; this is for clang)

@@ -2,8 +2,8 @@
 //
 // Determinism: the broadphase emits pairs sorted by (a, b); each parallel loop
 // writes only its own pair's, contact's or body's slot; the contacts are
-// compacted serially in pair order and forces are summed per body in a serial
-// pass in contact order. So 1 and N threads give bit-identical states.
+// placed in pair order (a prefix sum over the pairs' counts) and forces are
+// summed per body in a serial pass in contact order. So 1 and N threads give bit-identical states.
 #include "dynamics/world.h"
 
 #include "collision/dispatch.h"
@@ -285,35 +285,59 @@ int World::collide_wall(CandidatePair& pc, SubContact* out) const {
 
 void World::collide_list(std::vector<CandidatePair>& pairs, bool walls, std::vector<Contact>& contacts) {
   const std::size_t n = pairs.size();
-  // Each pair writes its results into its own fixed-capacity slot, in parallel.
+  // Each pair collides into a buffer on the stack and copies its touching
+  // results, in increasing sub-contact id, into its own fixed-capacity slot,
+  // in parallel. Most pairs do not touch and write nothing but their count.
   if (sub_results_.size() < n * kMaxSubContacts) sub_results_.resize(n * kMaxSubContacts);
-  sub_counts_.resize(n);
+  sub_counts_.resize(n + 1);
   parallel_for(
       static_cast<std::ptrdiff_t>(n),
       [&](std::ptrdiff_t k) {
+        SubContact local[kMaxSubContacts];
+        const int written = walls ? collide_wall(pairs[k], local) : collide_pair(pairs[k], local);
         SubContact* out = &sub_results_[static_cast<std::size_t>(k) * kMaxSubContacts];
-        sub_counts_[k] = walls ? collide_wall(pairs[k], out) : collide_pair(pairs[k], out);
+        int touching = 0;
+        for (int r = 0; r < written; ++r)
+          if (local[r].geo.touching) out[touching++] = local[r];
+        sub_counts_[k] = touching;
       },
       32, settings.threads);
-  // Serial compaction in pair order (routines write sub-contacts in increasing
-  // id, so the list stays sorted by (a, b, sub)); springs carried from last
-  // step's contacts by a merge join on (a, b, sub).
-  next_contacts_.clear();
-  std::size_t j = 0;
+  // Each pair's place in the new list: an exclusive prefix sum, so the list is
+  // sorted by (a, b, sub) as the pairs are by (a, b), whatever the threads.
+  std::size_t total = 0;
   for (std::size_t k = 0; k < n; ++k) {
-    const SubContact* res = &sub_results_[k * kMaxSubContacts];
-    for (int r = 0; r < sub_counts_[k]; ++r) {
-      if (!res[r].geo.touching) continue;
-      Contact c;
-      c.a = pairs[k].a;
-      c.b = pairs[k].b;
-      c.sub = res[r].sub;
-      c.geo = res[r].geo;
-      while (j < contacts.size() && contacts[j] < c) ++j;
-      if (j < contacts.size() && contacts[j].same_key(c)) c.xi = contacts[j].xi;
-      next_contacts_.push_back(c);
-    }
+    const int c = sub_counts_[k];
+    sub_counts_[k] = static_cast<int>(total);
+    total += static_cast<std::size_t>(c);
   }
+  sub_counts_[n] = static_cast<int>(total);
+  // Fill in parallel; springs carried from last step's contact with the same
+  // (a, b, sub), found by binary search in the sorted old list.
+  next_contacts_.resize(total);
+  parallel_for(
+      static_cast<std::ptrdiff_t>(n),
+      [&](std::ptrdiff_t k) {
+        const std::size_t begin = static_cast<std::size_t>(sub_counts_[k]);
+        const std::size_t end = static_cast<std::size_t>(sub_counts_[k + 1]);
+        if (begin == end) return;
+        const SubContact* res = &sub_results_[static_cast<std::size_t>(k) * kMaxSubContacts];
+        Contact key;
+        key.a = pairs[k].a;
+        key.b = pairs[k].b;
+        key.sub = res[0].sub;
+        auto old = std::lower_bound(contacts.begin(), contacts.end(), key);
+        for (std::size_t i = begin; i < end; ++i) {
+          Contact c;
+          c.a = key.a;
+          c.b = key.b;
+          c.sub = res[i - begin].sub;
+          c.geo = res[i - begin].geo;
+          while (old != contacts.end() && *old < c) ++old;
+          if (old != contacts.end() && old->same_key(c)) c.xi = old->xi;
+          next_contacts_[i] = c;
+        }
+      },
+      64, settings.threads);
   contacts.swap(next_contacts_);
 }
 

@@ -118,7 +118,7 @@ class World {
   std::vector<BodyPair> candidates_;
   std::vector<CandidatePair> scratch_;
   std::vector<SubContact> sub_results_;  // narrowphase: kMaxSubContacts slots per pair
-  std::vector<int> sub_counts_;          // narrowphase: results written per pair
+  std::vector<int> sub_counts_;          // narrowphase: touching results per pair, then offsets
   std::vector<Contact> next_contacts_;   // the contact list being compacted
   std::vector<Vec3> force_, torque_;
   std::vector<double> kinetic_;

@@ -1,14 +1,18 @@
 // A minimal XML reader for grainlab's own .vtp and .pvd files (see vtk_reader.h).
 //
-// The scanner walks the tags in order and keeps a stack of open elements; a
-// DataArray's text is taken whole up to its closing tag and decoded: the
-// byte count as a UInt32 or UInt64 (the VTKFile's header_type), then the
+// The scanner walks the tags in order and keeps a stack of open elements. An
+// inline DataArray's text is taken whole up to its closing tag and decoded:
+// the byte count as a UInt32 or UInt64 (the VTKFile's header_type), then the
 // values, little-endian; base64 of the two together (as grainlab and VTK
-// write), or of each apart (as some other writers do).
+// write), or of each apart (as some other writers do). An appended DataArray
+// is read at its offset in the raw <AppendedData> bytes: VTK's zlib blocks
+// (compressor="vtkZLibDataCompressor", io/zlib_blocks.h) or a byte count and
+// the values.
 #include "io/vtk_reader.h"
 
 #include "core/error.h"
 #include "io/base64.h"
+#include "io/zlib_blocks.h"
 
 #include <algorithm>
 #include <charconv>
@@ -189,10 +193,9 @@ T parse_number(const XmlScanner& xml, const Tag& tag, std::string_view key, cons
   return v;
 }
 
-// The values of one binary DataArray, decoded into T (the file's type is `type`).
-template <typename T>
-std::vector<T> decode_values(const XmlScanner& xml, std::string_view content, std::size_t header_size,
-                             std::size_t value_size, const std::string& name) {
+// The bytes of one inline binary DataArray (its header checked and removed).
+std::vector<std::uint8_t> inline_bytes(const XmlScanner& xml, std::string_view content, std::size_t header_size,
+                                       const std::string& name) {
   std::string compact;
   compact.reserve(content.size());
   for (const char c : content)
@@ -226,13 +229,46 @@ std::vector<T> decode_values(const XmlScanner& xml, std::string_view content, st
   }
   if (count != bytes.size())
     xml.fail("DataArray '{}' says it holds {} bytes but holds {}", name, count, bytes.size());
+  return bytes;
+}
+
+// The bytes of one DataArray stored at `offset` of the raw appended section:
+// zlib blocks (compressed files) or a byte count and the values.
+std::vector<std::uint8_t> appended_bytes(const XmlScanner& xml, std::string_view appended, std::size_t offset,
+                                         bool compressed, std::size_t header_size, const std::string& name) {
+  if (offset > appended.size())
+    xml.fail("DataArray '{}' starts at byte {} of the appended data, which holds {}: the file is cut short", name,
+             offset, appended.size());
+  const std::string_view data = appended.substr(offset);
+  if (compressed) {
+    try {
+      std::size_t used = 0;
+      return read_zlib_blocks(data, used);
+    } catch (const std::invalid_argument& e) {
+      xml.fail("DataArray '{}': {}", name, e.what());
+    }
+  }
+  if (data.size() < header_size) xml.fail("DataArray '{}' is too short to hold its byte count", name);
+  std::uint64_t count = 0;
+  std::memcpy(&count, data.data(), header_size);  // little-endian: a UInt32 count fills the low bytes
+  if (count > data.size() - header_size)
+    xml.fail("DataArray '{}' says it holds {} bytes but the appended data ends after {}", name, count,
+             data.size() - header_size);
+  const auto* p = reinterpret_cast<const std::uint8_t*>(data.data()) + header_size;
+  return {p, p + count};
+}
+
+// The values of a DataArray's bytes as T (the file's values are value_size bytes each).
+template <typename T>
+std::vector<T> values_of(const XmlScanner& xml, const std::vector<std::uint8_t>& bytes, std::size_t value_size,
+                         const std::string& name) {
   if (bytes.size() % value_size != 0)
     xml.fail("DataArray '{}': {} bytes is not a whole number of {}-byte values", name, bytes.size(), value_size);
   std::vector<T> out(bytes.size() / value_size);
   if (sizeof(T) == value_size) {
     if (!out.empty()) std::memcpy(out.data(), bytes.data(), bytes.size());
   } else if constexpr (std::is_same_v<T, std::int64_t>) {
-    // Int32 cell arrays (other writers' files) widened to Int64.
+    // Int32 cell arrays widened to Int64.
     for (std::size_t i = 0; i < out.size(); ++i) {
       std::int32_t v;
       std::memcpy(&v, bytes.data() + i * sizeof v, sizeof v);
@@ -253,7 +289,9 @@ std::size_t type_size(std::string_view type) {
 // Reads grainlab's PolyData out of the tags.
 class VtpParser {
  public:
-  VtpParser(std::string_view text, const std::string& source) : xml_(text, source) {}
+  // `text`: the XML; `appended`: the raw bytes after the '_' of its <AppendedData>, if any.
+  VtpParser(std::string_view text, std::string_view appended, const std::string& source)
+      : xml_(text, source), appended_(appended) {}
 
   PolyData parse() {
     Tag tag;
@@ -274,13 +312,10 @@ class VtpParser {
         seen_piece = true;
         piece(tag);
       } else if (tag.name == "DataArray") {
-        if (tag.self_closing) xml_.fail("DataArray with no data");
         const std::string parent = stack_.empty() ? "" : stack_.back();
-        data_array(tag, parent, xml_.content_until_close("DataArray"));
+        data_array(tag, parent, tag.self_closing ? std::string_view() : xml_.content_until_close("DataArray"));
         if (parent == "Points") seen_points = true;
-        continue;  // its closing tag is consumed
-      } else if (tag.name == "AppendedData") {
-        xml_.fail("appended data is not supported (grainlab writes inline binary)");
+        continue;  // its closing tag, if any, is consumed
       }
       if (!tag.self_closing) stack_.push_back(tag.name);
     }
@@ -307,8 +342,10 @@ class VtpParser {
     if (need(xml_, tag, "type") != "PolyData") xml_.fail("VTKFile type is '{}', not PolyData", need(xml_, tag, "type"));
     if (const std::string* order = find(tag, "byte_order"); order && *order != "LittleEndian")
       xml_.fail("byte order '{}' is not supported (only LittleEndian)", *order);
-    if (const std::string* c = find(tag, "compressor"); c && !c->empty())
-      xml_.fail("compressed data ({}) is not supported", *c);
+    if (const std::string* c = find(tag, "compressor"); c && !c->empty()) {
+      if (*c != "vtkZLibDataCompressor") xml_.fail("compressor '{}' is not supported (only vtkZLibDataCompressor)", *c);
+      compressed_ = true;
+    }
     const std::string* header = find(tag, "header_type");
     if (!header || *header == "UInt32") {
       header_size_ = 4;
@@ -334,8 +371,17 @@ class VtpParser {
   void data_array(const Tag& tag, const std::string& parent, std::string_view content) {
     const std::string& name = need(xml_, tag, "Name");
     const std::string& type = need(xml_, tag, "type");
-    if (need(xml_, tag, "format") != "binary")
-      xml_.fail("DataArray '{}' has format '{}': only inline binary is read", name, need(xml_, tag, "format"));
+    const std::string& format = need(xml_, tag, "format");
+    std::vector<std::uint8_t> bytes;
+    if (format == "appended") {
+      const std::size_t offset = parse_number<std::size_t>(xml_, tag, "offset", need(xml_, tag, "offset"));
+      bytes = appended_bytes(xml_, appended_, offset, compressed_, header_size_, name);
+    } else if (format == "binary") {
+      if (compressed_) xml_.fail("DataArray '{}': compressed inline data is not supported (only appended)", name);
+      bytes = inline_bytes(xml_, content, header_size_, name);
+    } else {
+      xml_.fail("DataArray '{}' has format '{}': only binary (inline) or appended data is read", name, format);
+    }
     const std::size_t size = type_size(type);
     if (size == 0) xml_.fail("DataArray '{}' has type '{}' (Float64, Float32, Int32 or Int64 expected)", name, type);
     int components = 1;
@@ -346,7 +392,7 @@ class VtpParser {
     if (parent == "Verts" || parent == "Lines" || parent == "Polys") {
       VtkCells& cells = parent == "Verts" ? pd_.verts : parent == "Lines" ? pd_.lines : pd_.polys;
       if (type != "Int64" && type != "Int32") xml_.fail("{} array '{}' has type {}, not an integer", parent, name, type);
-      std::vector<std::int64_t> v = decode_values<std::int64_t>(xml_, content, header_size_, size, name);
+      std::vector<std::int64_t> v = values_of<std::int64_t>(xml_, bytes, size, name);
       if (name == "connectivity") {
         cells.connectivity = std::move(v);
       } else if (name == "offsets") {
@@ -362,11 +408,11 @@ class VtpParser {
     a.name = name;
     a.components = components;
     if (type == "Float64") {
-      a.values = decode_values<double>(xml_, content, header_size_, size, name);
+      a.values = values_of<double>(xml_, bytes, size, name);
     } else if (type == "Float32") {
-      a.values = decode_values<float>(xml_, content, header_size_, size, name);
+      a.values = values_of<float>(xml_, bytes, size, name);
     } else if (type == "Int32") {
-      a.values = decode_values<std::int32_t>(xml_, content, header_size_, size, name);
+      a.values = values_of<std::int32_t>(xml_, bytes, size, name);
     } else {
       xml_.fail("DataArray '{}' has type Int64, which grainlab's point and cell data do not use", name);
     }
@@ -385,6 +431,8 @@ class VtpParser {
   }
 
   XmlScanner xml_;
+  std::string_view appended_;
+  bool compressed_ = false;
   std::vector<std::string> stack_;
   PolyData pd_;
   std::size_t header_size_ = 4;
@@ -394,7 +442,22 @@ class VtpParser {
 }  // namespace
 
 PolyData parse_vtp(std::string_view text, const std::string& source_name) {
-  return VtpParser(text, source_name).parse();
+  // Appended data: XML up to <AppendedData>, then its raw bytes from after an
+  // '_' to the closing tag. The XML part is read as if </VTKFile> followed it.
+  const std::size_t at = text.find("<AppendedData");
+  if (at == std::string_view::npos) return VtpParser(text, {}, source_name).parse();
+  const std::string xml = std::string(text.substr(0, at)) + "</VTKFile>\n";
+  const std::size_t open_end = text.find('>', at);
+  const std::string_view open = text.substr(at, open_end == std::string_view::npos ? 0 : open_end - at);
+  const std::size_t underscore = open_end == std::string_view::npos ? open_end : text.find('_', open_end);
+  const std::size_t close = text.rfind("</AppendedData>");
+  if (underscore == std::string_view::npos || close == std::string_view::npos || close < underscore)
+    input_error("{}: the <AppendedData> section is cut short (no '_' or no closing tag). The file is damaged, "
+                "perhaps by a run that was killed while another program copied it",
+                source_name);
+  if (open.find("encoding=\"raw\"") == std::string_view::npos)
+    input_error("{}: only raw <AppendedData> is read (the file's is base64 or unstated)", source_name);
+  return VtpParser(xml, text.substr(underscore + 1, close - underscore - 1), source_name).parse();
 }
 
 PolyData read_vtp(const std::filesystem::path& path) { return parse_vtp(read_text(path), path.string()); }

@@ -1,7 +1,8 @@
 // Reads back the .vtp and .pvd files that vtk_writer.h writes: a minimal XML
 // reader for that format only (elements, attributes, inline base64 binary
-// DataArrays with a UInt32 or UInt64 header). Not a general VTK reader: no
-// ascii or appended data, no compression, no triangle strips.
+// DataArrays, or raw appended ones, zlib-compressed or not, with a UInt32 or
+// UInt64 header). Not a general VTK reader: no ascii data, no base64 appended
+// data, no compressed inline data, no triangle strips.
 #pragma once
 
 #include "io/vtk_writer.h"

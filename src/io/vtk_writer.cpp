@@ -3,6 +3,7 @@
 
 #include "io/atomic_file.h"
 #include "io/base64.h"
+#include "io/zlib_blocks.h"
 
 #include <fmt/format.h>
 
@@ -10,6 +11,7 @@
 #include <bit>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <set>
 #include <span>
 #include <stdexcept>
@@ -104,28 +106,67 @@ void append_payload(std::string& out, std::span<const std::uint8_t> bytes) {
   base64_append(out, bytes.subspan(first));
 }
 
-void append_array(std::string& out, const char* indent, const VtkArray& a) {
-  out += fmt::format("{}<DataArray type=\"{}\" Name=\"{}\" NumberOfComponents=\"{}\" format=\"binary\">", indent,
-                     a.type_name(), xml_escape(a.name), a.components);
-  std::visit([&](const auto& v) { append_payload(out, bytes_of(v)); }, a.values);
-  out += "</DataArray>\n";
-}
+// Writes DataArray elements with their data inline, or as references into
+// the appended section it collects (then written by finish()).
+class ArrayWriter {
+ public:
+  explicit ArrayWriter(VtpEncoding encoding) : encoding_(encoding) {}
 
-void append_cells(std::string& out, const char* element, const VtkCells& c) {
+  // A DataArray of `type` whose values are `bytes`; components 0 leaves the attribute out.
+  void write(std::string& out, const char* indent, const char* type, std::string_view name, int components,
+             std::span<const std::uint8_t> bytes) {
+    out += fmt::format("{}<DataArray type=\"{}\" Name=\"{}\"", indent, type, xml_escape(name));
+    if (components > 0) out += fmt::format(" NumberOfComponents=\"{}\"", components);
+    if (encoding_ == VtpEncoding::Inline) {
+      out += " format=\"binary\">";
+      append_payload(out, bytes);
+      out += "</DataArray>\n";
+    } else {
+      out += fmt::format(" format=\"appended\" offset=\"{}\"/>\n", appended_.size());
+      append_zlib_blocks(appended_, bytes);
+    }
+  }
+
+  void write(std::string& out, const char* indent, const VtkArray& a) {
+    std::visit([&](const auto& v) { write(out, indent, a.type_name(), a.name, a.components, bytes_of(v)); }, a.values);
+  }
+
+  // Cell connectivity or offsets: Int64 inline; Int32 compressed when every value fits.
+  void write_cells(std::string& out, const char* name, const std::vector<std::int64_t>& v) {
+    const bool narrow = encoding_ == VtpEncoding::Compressed &&
+                        std::all_of(v.begin(), v.end(), [](std::int64_t x) {
+                          return x >= 0 && x <= std::numeric_limits<std::int32_t>::max();
+                        });
+    if (!narrow) return write(out, "        ", "Int64", name, 0, bytes_of(v));
+    const std::vector<std::int32_t> v32(v.begin(), v.end());
+    write(out, "        ", "Int32", name, 0, bytes_of(v32));
+  }
+
+  // The appended section, if any, before </VTKFile>.
+  void finish(std::string& out) const {
+    if (encoding_ == VtpEncoding::Inline) return;
+    out += "  <AppendedData encoding=\"raw\">\n   _";
+    out += appended_;
+    out += "\n  </AppendedData>\n";
+  }
+
+ private:
+  VtpEncoding encoding_;
+  std::string appended_;
+};
+
+void append_cells(std::string& out, ArrayWriter& w, const char* element, const VtkCells& c) {
   if (c.size() == 0) return;
   out += fmt::format("      <{}>\n", element);
-  for (const auto& [name, v] : {std::pair{"connectivity", &c.connectivity}, std::pair{"offsets", &c.offsets}}) {
-    out += fmt::format("        <DataArray type=\"Int64\" Name=\"{}\" format=\"binary\">", name);
-    append_payload(out, bytes_of(*v));
-    out += "</DataArray>\n";
-  }
+  w.write_cells(out, "connectivity", c.connectivity);
+  w.write_cells(out, "offsets", c.offsets);
   out += fmt::format("      </{}>\n", element);
 }
 
-void append_data(std::string& out, const char* element, const std::vector<VtkArray>& arrays) {
+void append_data(std::string& out, ArrayWriter& w, const char* element, const std::vector<VtkArray>& arrays) {
   if (arrays.empty()) return;
   out += fmt::format("      <{}>\n", element);
-  for (const VtkArray& a : arrays) append_array(out, "        ", a);
+  for (const VtkArray& a : arrays) w.write(out, "        ", a);
   out += fmt::format("      </{}>\n", element);
 }
 
@@ -145,37 +186,45 @@ void check_polydata(const PolyData& pd) {
   check_arrays(pd.cell_data, "cell data", pd.cell_count());
 }
 
-std::string vtp_text(const PolyData& pd) {
+std::string vtp_text(const PolyData& pd, VtpEncoding encoding) {
   check_polydata(pd);
   std::string out;
-  std::size_t bytes = pd.points.value_count() * 8 + 8 * (pd.verts.connectivity.size() + pd.lines.connectivity.size() +
-                                                         pd.polys.connectivity.size() + pd.cell_count());
-  for (const auto* list : {&pd.point_data, &pd.cell_data})
-    for (const VtkArray& a : *list) bytes += a.value_count() * 8;
-  out.reserve(bytes / 3 * 4 + 4096);
+  if (encoding == VtpEncoding::Inline) {
+    std::size_t bytes = pd.points.value_count() * 8 + 8 * (pd.verts.connectivity.size() +
+                                                           pd.lines.connectivity.size() +
+                                                           pd.polys.connectivity.size() + pd.cell_count());
+    for (const auto* list : {&pd.point_data, &pd.cell_data})
+      for (const VtkArray& a : *list) bytes += a.value_count() * 8;
+    out.reserve(bytes / 3 * 4 + 4096);
+  }
+  ArrayWriter w(encoding);
 
   out += "<?xml version=\"1.0\"?>\n";
-  out += "<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n";
+  out += "<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\"";
+  out += encoding == VtpEncoding::Compressed ? " compressor=\"vtkZLibDataCompressor\">\n" : ">\n";
   out += "  <PolyData>\n";
   out += fmt::format(
       "    <Piece NumberOfPoints=\"{}\" NumberOfVerts=\"{}\" NumberOfLines=\"{}\" NumberOfStrips=\"0\" "
       "NumberOfPolys=\"{}\">\n",
       pd.point_count(), pd.verts.size(), pd.lines.size(), pd.polys.size());
-  append_data(out, "PointData", pd.point_data);
-  append_data(out, "CellData", pd.cell_data);
+  append_data(out, w, "PointData", pd.point_data);
+  append_data(out, w, "CellData", pd.cell_data);
   out += "      <Points>\n";
-  append_array(out, "        ", pd.points);
+  w.write(out, "        ", pd.points);
   out += "      </Points>\n";
-  append_cells(out, "Verts", pd.verts);
-  append_cells(out, "Lines", pd.lines);
-  append_cells(out, "Polys", pd.polys);
+  append_cells(out, w, "Verts", pd.verts);
+  append_cells(out, w, "Lines", pd.lines);
+  append_cells(out, w, "Polys", pd.polys);
   out += "    </Piece>\n";
   out += "  </PolyData>\n";
+  w.finish(out);
   out += "</VTKFile>\n";
   return out;
 }
 
-void write_vtp(const std::filesystem::path& path, const PolyData& pd) { write_file_atomically(path, vtp_text(pd)); }
+void write_vtp(const std::filesystem::path& path, const PolyData& pd, VtpEncoding encoding) {
+  write_file_atomically(path, vtp_text(pd, encoding));
+}
 
 std::string pvd_text(const std::vector<PvdEntry>& entries) {
   std::string out;

@@ -1,19 +1,29 @@
 // VTK XML PolyData (.vtp) files and ParaView .pvd collections, written by hand
 // (no VTK library): a whole run opens in ParaView as one time series.
 //
-// Encoding: every DataArray is inline binary, format="binary": one base64
-// stream of a UInt64 byte count (header_type="UInt64", file version 1.0)
-// followed by the little-endian values. No compression. Header and values are
-// encoded together, not as two padded blocks: VTK's reader seeks into the
-// decoded stream at byte offsets (it reads PolyData cell data per cell kind),
-// which lands on the wrong characters if the header was padded apart (checked
-// against VTK 9.1's vtkXMLPolyDataReader). Inline base64 keeps each file
-// well-formed XML (raw appended data would not be).
+// Two encodings of the DataArrays (VtpEncoding):
+// - Compressed (the default, what runs write): every array zlib-compressed in
+//   VTK's blocks (compressor="vtkZLibDataCompressor", io/zlib_blocks.h) and
+//   stored raw in one <AppendedData encoding="raw"> section after an '_', each
+//   DataArray naming its byte offset there (format="appended", header_type
+//   UInt64). Cell arrays are Int32 when every index fits. This is how VTK's
+//   own writers store data by default; the file is XML up to the appended
+//   section and binary after it. Snapshot arrays repeat each grain's values on
+//   its points and each shape's triangles on every grain, which zlib packs
+//   tightly: a snapshot is about 7x smaller per grain face than inline base64
+//   with Float32 values (tests/io/snapshot_vtk_test.cpp measures it).
+// - Inline: each DataArray inline binary, format="binary": one base64 stream
+//   of a UInt64 byte count followed by the little-endian values; Int64 cells;
+//   no compression. Header and values are encoded together, not as two padded
+//   blocks: VTK's reader seeks into the decoded stream at byte offsets (it
+//   reads PolyData cell data per cell kind), which lands on the wrong
+//   characters if the header was padded apart (checked against VTK 9.1's
+//   vtkXMLPolyDataReader). Well-formed XML throughout, four thirds of the bytes.
 //
 // Cells follow VTK's PolyData layout: for each cell kind (verts, lines, polys)
 // a connectivity list of point indices and the offsets of each cell's end in
-// it (no leading 0), written as Int64. Cell data holds one tuple per cell,
-// verts first, then lines, then polys.
+// it (no leading 0). Cell data holds one tuple per cell, verts first, then
+// lines, then polys.
 //
 // Every file goes through write_file_atomically: a killed run leaves no torn file.
 #pragma once
@@ -70,11 +80,15 @@ struct PolyData {
 // number of tuples, an empty or repeated array name.
 void check_polydata(const PolyData& pd);
 
+// How a .vtp file stores its arrays (see the top of this file).
+enum class VtpEncoding { Compressed, Inline };
+
 // The .vtp file contents of `pd` (checked first).
-std::string vtp_text(const PolyData& pd);
+std::string vtp_text(const PolyData& pd, VtpEncoding encoding = VtpEncoding::Compressed);
 
 // Writes `pd` to `path` atomically (std::invalid_argument if inconsistent, RunError if the write fails).
-void write_vtp(const std::filesystem::path& path, const PolyData& pd);
+void write_vtp(const std::filesystem::path& path, const PolyData& pd,
+               VtpEncoding encoding = VtpEncoding::Compressed);
 
 // One time step of a .pvd collection: the time (s) and the data file, relative to the .pvd's folder.
 struct PvdEntry {

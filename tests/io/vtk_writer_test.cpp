@@ -1,5 +1,7 @@
-// VTK XML PolyData and .pvd files: written, read back identical (bit for bit),
-// laid out as VTK expects (UInt64 byte count encoded apart from the values),
+// VTK XML PolyData and .pvd files: written, read back identical (bit for bit)
+// in both encodings, laid out as VTK expects (inline: the UInt64 byte count
+// and the values in one base64 stream; compressed: VTK's zlib blocks in a raw
+// appended section, decoded here with zlib directly), damaged files refused,
 // inconsistent data refused, and the collection valid after every addition.
 #include "io/vtk_reader.h"
 #include "io/vtk_writer.h"
@@ -12,8 +14,11 @@
 
 #include <gtest/gtest.h>
 
+#include <zlib.h>
+
 #include <bit>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 namespace grainlab {
@@ -56,10 +61,23 @@ TEST(VtkWriter, PolyDataRoundTripsBitForBit) {
   const PolyData pd = every_array_type();
   ASSERT_EQ(pd.point_count(), 5u);
   ASSERT_EQ(pd.cell_count(), 5u);
-  write_vtp(dir.path / "every.vtp", pd);
-  const PolyData back = read_vtp(dir.path / "every.vtp");
-  expect_same(pd, back);
-  EXPECT_EQ(back.points.values.index(), 0u);  // Float64 stays Float64
+  for (const VtpEncoding e : {VtpEncoding::Compressed, VtpEncoding::Inline}) {
+    write_vtp(dir.path / "every.vtp", pd, e);
+    const PolyData back = read_vtp(dir.path / "every.vtp");
+    expect_same(pd, back);
+    EXPECT_EQ(back.points.values.index(), 0u);  // Float64 stays Float64
+  }
+}
+
+TEST(VtkWriter, ArraysLongerThanOneZlibBlockRoundTrip) {
+  test::IoTempDir dir;
+  PolyData pd;
+  std::vector<double> p(3 * 50000);  // 1.2 MB: 5 blocks of 256 KiB, the last one partial
+  for (std::size_t i = 0; i < p.size(); ++i) p[i] = std::sin(0.37 * static_cast<double>(i)) * 1e-3;
+  pd.points.values = p;
+  for (std::int64_t i = 0; i + 2 < 50000; i += 3) pd.polys.add({i, i + 1, i + 2});
+  write_vtp(dir.path / "big.vtp", pd);
+  expect_same(pd, read_vtp(dir.path / "big.vtp"));
 }
 
 TEST(VtkWriter, Float32PointsAndEmptyDataRoundTrip) {
@@ -82,7 +100,7 @@ TEST(VtkWriter, BinaryLayoutIsVtksInlineBase64WithUInt64Header) {
   PolyData pd;
   pd.points.values = std::vector<double>{1, 2, 3};
   pd.verts.add({0});
-  const std::string text = vtp_text(pd);
+  const std::string text = vtp_text(pd, VtpEncoding::Inline);
   EXPECT_NE(text.find("header_type=\"UInt64\""), std::string::npos);
   EXPECT_NE(text.find("byte_order=\"LittleEndian\""), std::string::npos);
   EXPECT_NE(text.find("NumberOfPoints=\"1\" NumberOfVerts=\"1\" NumberOfLines=\"0\""), std::string::npos);
@@ -142,8 +160,59 @@ TEST(VtkWriter, RefusesInconsistentPolyData) {
   refused(pd);
 }
 
-TEST(VtkWriter, ReaderRefusesDamagedFiles) {
+TEST(VtkWriter, CompressedLayoutIsVtksZlibBlocksInRawAppendedData) {
+  PolyData pd;
+  const std::vector<double> xyz{1, 2, 3, 4, 5, 6};
+  pd.points.values = xyz;
+  pd.lines.add({0, 1});
+  const std::string text = vtp_text(pd);
+  EXPECT_NE(text.find("compressor=\"vtkZLibDataCompressor\""), std::string::npos) << text;
+  EXPECT_NE(text.find("header_type=\"UInt64\""), std::string::npos);
+  // Points come first in the appended data (no point or cell data here), then
+  // the Int32 connectivity and offsets.
+  EXPECT_NE(text.find("NumberOfComponents=\"3\" format=\"appended\" offset=\"0\"/>"), std::string::npos) << text;
+  EXPECT_NE(text.find("<DataArray type=\"Int32\" Name=\"connectivity\" format=\"appended\""), std::string::npos);
+  const std::size_t underscore = text.find('_', text.find("<AppendedData encoding=\"raw\">"));
+  ASSERT_NE(underscore, std::string::npos);
+  const char* data = text.data() + underscore + 1;
+  std::uint64_t head[4];
+  std::memcpy(head, data, sizeof head);
+  EXPECT_EQ(head[0], 1u);        // one block
+  EXPECT_EQ(head[2], 48u);       // holding all 48 bytes
+  EXPECT_LE(head[2], head[1]);   // within the block size
+  std::vector<double> back(6);
+  uLongf len = 48;
+  ASSERT_EQ(uncompress(reinterpret_cast<Bytef*>(back.data()), &len, reinterpret_cast<const Bytef*>(data + 32),
+                       static_cast<uLong>(head[3])),
+            Z_OK);
+  EXPECT_EQ(len, 48u);
+  EXPECT_EQ(back, xyz);
+  // The connectivity's header follows right after the points' block.
+  const std::size_t conn_offset = 32 + head[3];
+  EXPECT_NE(text.find(fmt::format("Name=\"connectivity\" format=\"appended\" offset=\"{}\"/>", conn_offset)),
+            std::string::npos) << text;
+}
+
+TEST(VtkWriter, ReaderRefusesDamagedCompressedFiles) {
   const std::string good = vtp_text(every_array_type());
+  ASSERT_NO_THROW(parse_vtp(good, "good.vtp"));
+  const auto damaged = [&](const std::string& text, const char* why) {
+    const std::string msg = test::error_of<InputError>([&] { parse_vtp(text, "damaged.vtp"); });
+    EXPECT_NE(msg.find("damaged.vtp"), std::string::npos) << why << ": " << msg;
+  };
+  damaged(good.substr(0, good.size() - 40), "truncated in the appended data");
+  damaged(good.substr(0, good.find("<AppendedData") + 20), "truncated in the appended tag");
+  std::string t = good;
+  const std::size_t data = t.find('_', t.find("<AppendedData")) + 1;
+  t[data + 40] = static_cast<char>(t[data + 40] ^ 0x5a);  // inside the first zlib block
+  damaged(t, "corrupt block");
+  t = good;
+  t.replace(t.find("offset=\"0\""), 10, "offset=\"9\"");
+  damaged(t, "wrong offset");
+}
+
+TEST(VtkWriter, ReaderRefusesDamagedFiles) {
+  const std::string good = vtp_text(every_array_type(), VtpEncoding::Inline);
   const auto damaged = [&](std::string text, const char* why) {
     const std::string msg = test::error_of<InputError>([&] { parse_vtp(text, "damaged.vtp"); });
     EXPECT_NE(msg.find("damaged.vtp"), std::string::npos) << why << ": " << msg;
@@ -209,7 +278,11 @@ TEST(PvdCollection, ReplacesARewrittenSnapshotAndRefusesBadTimes) {
 TEST(VtkWriter, FilesAreWellFormedXmlPerXmllint) {
   if (!test::have_xmllint()) GTEST_SKIP() << "xmllint is not installed";
   test::IoTempDir dir;
-  write_vtp(dir.path / "every.vtp", every_array_type());
+  write_vtp(dir.path / "every.vtp", every_array_type(), VtpEncoding::Inline);
+  // A compressed file is XML up to its raw appended bytes.
+  const std::string compressed = vtp_text(every_array_type());
+  write_file_atomically(dir.path / "head.vtp", compressed.substr(0, compressed.find("<AppendedData")) + "</VTKFile>\n");
+  EXPECT_EQ(test::xmllint_status(dir.path / "head.vtp"), 0);
   PvdCollection pvd(dir.path / "every.pvd");
   pvd.add(0.25, "every & more.vtp");
   EXPECT_EQ(test::xmllint_status(dir.path / "every.vtp"), 0);
