@@ -71,14 +71,18 @@ ContactResult collide(const PlaneShape& a, const PolytopeShape& b) {
   for (std::size_t q = 0; q < queue.size(); ++q) {
     const Index v = queue[q];
     const double d = -(h0 + poly.vertex(v).dot(nl));  // depth of v below the plane
-    soft.add(b.pos + b.scale * (b.rot * poly.vertex(v)), d, a.normal);
+    const Vec3 x = b.pos + b.scale * (b.rot * poly.vertex(v));
+    soft.add(x, d, a.normal, x + 0.5 * d * a.normal);
     for (const Index* it = poly.neighbours_begin(v); it != poly.neighbours_end(v); ++it) {
       if (stamp[*it] == generation) continue;
       stamp[*it] = generation;
       if (h0 + poly.vertex(*it).dot(nl) < 0) queue.push_back(*it);
     }
   }
-  if (!soft.finish(r, r.depth, a.normal)) r.point = pdeep - 0.5 * hmin * a.normal;  // PD at the deepest vertex
+  if (soft.finish(r, r.depth, a.normal))
+    r.normal = a.normal;  // every vertex is pushed along it: G is parallel to it up to rounding
+  else
+    r.point = pdeep - 0.5 * hmin * a.normal;  // PD at the deepest vertex
   return r;
 }
 

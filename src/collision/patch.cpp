@@ -94,8 +94,10 @@ void add_side(const PolytopeShape& s, const std::vector<Index>& verts, const Pol
       const double dk = planes[k].c - planes[k].m.dot(xl);
       if (dk < d) d = dk, best = k;
     }
-    if (d > 0 && d < std::numeric_limits<double>::infinity())
-      soft.add(s.pos + s.scale * (s.rot * pv), d * o.scale, sign * (o.rot * planes[best].m));
+    if (d > 0 && d < std::numeric_limits<double>::infinity()) {
+      const Vec3 x = s.pos + s.scale * (s.rot * pv), m = o.rot * planes[best].m;
+      soft.add(x, d * o.scale, sign * m, x);
+    }
   }
 }
 

@@ -35,7 +35,8 @@
 //
 // Mapping to one contact. The law is evaluated at depth D along n = G/|G| and
 // its elastic force multiplied by gain = |G|; it acts at the point p of the
-// wrench's line of action nearest the d^2-weighted centroid of the vertices,
+// wrench's line of action nearest the d^2-weighted centroid of the points
+// halfway between each vertex and the other's surface,
 // and the part of T along n (zero for a face on a plane) is returned as
 // `twist`, a torque per unit u'(D). Damping and friction act at p.
 #pragma once
@@ -59,15 +60,16 @@ class SoftDepth {
 
   // A vertex at x (m) lying d > 0 (m) inside the other shape; u (unit) is the
   // push on B: A's outward face normal for a vertex of B, minus B's outward
-  // face normal for a vertex of A (the reaction of the push on A).
-  void add(const Vec3& x, double d, const Vec3& u) {
+  // face normal for a vertex of A (the reaction of the push on A); `mid` is
+  // the point halfway between the vertex and the other's surface (m).
+  void add(const Vec3& x, double d, const Vec3& u, const Vec3& mid) {
     const Vec3 s = x - c_;
     const double d2 = d * d;
     s1_ += d, s2_ += d2, s3_ += d2 * d;
     const Vec3 m = s.cross(u);
     u1_ += d * u, u2_ += d2 * u;
     m1_ += d * m, m2_ += d2 * m;
-    x1_ += d * s, x2_ += d2 * s;
+    x1_ += d * s, x2_ += d2 * (mid - c_);
     cov_ += d * (s * s.transpose());
   }
 
