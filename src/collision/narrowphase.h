@@ -15,6 +15,8 @@ ContactResult collide(const PlaneShape& a, const SphereShape& b);
 // (soft_depth.h): depth D, gain and the point on the line of action of the
 // conservative force (a face lying flat on the plane pushes at its middle).
 ContactResult collide(const PlaneShape& a, const PolytopeShape& b);
+// Exact box-sphere (box_sphere.cpp); normal from the box to the sphere.
+ContactResult collide(const BoxShape& a, const SphereShape& b);
 
 // General convex pair by GJK (separation) and EPA (penetration).
 // `dir` is the warm-start search direction (e.g. last step's normal for this

@@ -1,6 +1,6 @@
-// Wall-grain pair routines (the wall is shape a): exact plane-sphere and
-// plane-polytope (depth-weighted centroid); box walls by GJK/EPA, or the warm
-// translated GJK for polytopes, with the exact face point (narrowphase.h).
+// Wall-grain pair routines (the wall is shape a): exact plane-sphere,
+// box-sphere and plane-polytope (depth-weighted centroid); box-polytope by the
+// warm translated GJK (GJK/EPA cold), with the exact face point (narrowphase.h).
 // A plane's outward normal is its local +z axis, q * z.
 #include "collision/narrowphase.h"
 #include "collision/pair_routines.h"
@@ -20,9 +20,8 @@ int plane_polytope(const PosedShape& a, const PosedShape& b, PairCache& c, SubCo
   return 1;
 }
 
-int box_sphere(const PosedShape& a, const PosedShape& b, PairCache& c, SubContact* out) {
-  const BoxShape box{*a.rot, a.pos, a.half};
-  out[0] = {collide_convex(box, SphereShape{b.pos, b.radius}, c.dir), 0};
+int box_sphere(const PosedShape& a, const PosedShape& b, PairCache&, SubContact* out) {
+  out[0] = {collide(BoxShape{*a.rot, a.pos, a.half}, SphereShape{b.pos, b.radius}), 0};
   return 1;
 }
 

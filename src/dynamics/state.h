@@ -34,6 +34,12 @@ struct WallState {
 struct CandidatePair {
   Index a = 0, b = 0;
   PairCache cache;  // GJK direction (initially b's centre minus a's), support hints, warm flag
+  // Where the pair's contacts begin in the contact list of the last
+  // narrowphase: kNoContacts if it had none, kUnknownContacts if not known (a
+  // new or restored pair). A hint for carrying springs, checked before use,
+  // so it never changes a result; not checkpointed.
+  std::int32_t first_contact = kUnknownContacts;
+  static constexpr std::int32_t kNoContacts = -1, kUnknownContacts = -2;
 
   std::uint64_t key() const {
     return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) |

@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace grainlab {
 
@@ -32,6 +33,21 @@ void carry_history(const std::vector<CandidatePair>& old_pairs, std::vector<Cand
     while (j < old_pairs.size() && old_pairs[j].key() < k) ++j;
     if (j < old_pairs.size() && old_pairs[j].key() == k) p = old_pairs[j];
   }
+}
+
+// Index of the first contact of pair (a, b) in `contacts` (sorted by (a, b,
+// sub)), or where it would be: `hint` if it is that index, else by binary search.
+std::size_t first_contact_of(const std::vector<Contact>& contacts, Index a, Index b, std::int32_t hint) {
+  const auto of_pair = [&](std::size_t i) { return contacts[i].a == a && contacts[i].b == b; };
+  if (hint >= 0 && static_cast<std::size_t>(hint) < contacts.size()) {
+    const auto h = static_cast<std::size_t>(hint);
+    if (of_pair(h) && (h == 0 || !of_pair(h - 1))) return h;
+  }
+  Contact key;
+  key.a = a;
+  key.b = b;
+  key.sub = std::numeric_limits<std::int32_t>::min();
+  return static_cast<std::size_t>(std::lower_bound(contacts.begin(), contacts.end(), key) - contacts.begin());
 }
 
 }  // namespace
@@ -293,7 +309,7 @@ void World::collide_list(std::vector<CandidatePair>& pairs, bool walls, std::vec
   parallel_for(
       static_cast<std::ptrdiff_t>(n),
       [&](std::ptrdiff_t k) {
-        SubContact local[kMaxSubContacts];
+        thread_local SubContact local[kMaxSubContacts];  // constructed once per thread, not per pair
         const int written = walls ? collide_wall(pairs[k], local) : collide_pair(pairs[k], local);
         SubContact* out = &sub_results_[static_cast<std::size_t>(k) * kMaxSubContacts];
         int touching = 0;
@@ -312,28 +328,29 @@ void World::collide_list(std::vector<CandidatePair>& pairs, bool walls, std::vec
   }
   sub_counts_[n] = static_cast<int>(total);
   // Fill in parallel; springs carried from last step's contact with the same
-  // (a, b, sub), found by binary search in the sorted old list.
+  // (a, b, sub), found in the sorted old list where the pair's hint says (if
+  // it holds) or by binary search.
   next_contacts_.resize(total);
   parallel_for(
       static_cast<std::ptrdiff_t>(n),
       [&](std::ptrdiff_t k) {
+        CandidatePair& pair = pairs[k];
         const std::size_t begin = static_cast<std::size_t>(sub_counts_[k]);
         const std::size_t end = static_cast<std::size_t>(sub_counts_[k + 1]);
+        const std::int32_t hint = pair.first_contact;
+        pair.first_contact = begin == end ? CandidatePair::kNoContacts : static_cast<std::int32_t>(begin);
         if (begin == end) return;
         const SubContact* res = &sub_results_[static_cast<std::size_t>(k) * kMaxSubContacts];
-        Contact key;
-        key.a = pairs[k].a;
-        key.b = pairs[k].b;
-        key.sub = res[0].sub;
-        auto old = std::lower_bound(contacts.begin(), contacts.end(), key);
+        std::size_t old = hint == CandidatePair::kNoContacts ? contacts.size()
+                                                             : first_contact_of(contacts, pair.a, pair.b, hint);
         for (std::size_t i = begin; i < end; ++i) {
           Contact c;
-          c.a = key.a;
-          c.b = key.b;
+          c.a = pair.a;
+          c.b = pair.b;
           c.sub = res[i - begin].sub;
           c.geo = res[i - begin].geo;
-          while (old != contacts.end() && *old < c) ++old;
-          if (old != contacts.end() && old->same_key(c)) c.xi = old->xi;
+          while (old < contacts.size() && contacts[old] < c) ++old;
+          if (old < contacts.size() && contacts[old].same_key(c)) c.xi = contacts[old].xi;
           next_contacts_[i] = c;
         }
       },

@@ -29,7 +29,9 @@ namespace grainlab {
 // A new field in these structs must be written below (and the version bumped).
 static_assert(sizeof(ContactResult) == 104, "ContactResult changed: update io/checkpoint.cpp and kCheckpointVersion");
 static_assert(sizeof(PairCache) == 40, "PairCache changed: update io/checkpoint.cpp and kCheckpointVersion");
-static_assert(sizeof(CandidatePair) == 48, "CandidatePair changed: update io/checkpoint.cpp and kCheckpointVersion");
+// CandidatePair::first_contact is a checked hint, not state: it is not written
+// and reads back as kUnknownContacts.
+static_assert(sizeof(CandidatePair) == 56, "CandidatePair changed: update io/checkpoint.cpp and kCheckpointVersion");
 static_assert(sizeof(Contact) == 200, "Contact changed: update io/checkpoint.cpp and kCheckpointVersion");
 
 namespace {
