@@ -1,5 +1,6 @@
 // Closed-form narrowphase: sphere-sphere, plane-sphere, plane-polytope.
 #include "collision/narrowphase.h"
+#include "collision/soft_depth.h"
 
 #include <cstdint>
 #include <vector>
@@ -34,7 +35,9 @@ ContactResult collide(const PlaneShape& a, const SphereShape& b) {
 // it over the vertices below the plane. That set is connected in the edge graph
 // (from any vertex below the plane a height-decreasing edge path reaches the
 // deepest vertex), so the walk finds all of them while visiting only them and
-// their neighbours.
+// their neighbours. Each vertex below the plane enters the soft depth
+// (soft_depth.h) with its depth, pushed along the plane normal: the force is
+// the exact gradient of u(D), so a face rocking on the plane gains no energy.
 ContactResult collide(const PlaneShape& a, const PolytopeShape& b) {
   ContactResult r;
   r.normal = a.normal;
@@ -64,27 +67,22 @@ ContactResult collide(const PlaneShape& a, const PolytopeShape& b) {
   queue.clear();
   queue.push_back(deepest);
   stamp[deepest] = generation;
-  Vec3 wsum = Vec3::Zero();
-  double wtot = 0, wsq = 0;
+  SoftDepth soft(b.pos);
   for (std::size_t q = 0; q < queue.size(); ++q) {
     const Index v = queue[q];
-    const double w = -(h0 + poly.vertex(v).dot(nl));  // depth of v below the plane
-    wsum += w * poly.vertex(v);
-    wsq += w * poly.vertex(v).squaredNorm();
-    wtot += w;
+    const double d = -(h0 + poly.vertex(v).dot(nl));  // depth of v below the plane
+    const Vec3 x = b.pos + b.scale * (b.rot * poly.vertex(v));
+    soft.add(x, d, a.normal, x + 0.5 * d * a.normal);
     for (const Index* it = poly.neighbours_begin(v); it != poly.neighbours_end(v); ++it) {
       if (stamp[*it] == generation) continue;
       stamp[*it] = generation;
       if (h0 + poly.vertex(*it).dot(nl) < 0) queue.push_back(*it);
     }
   }
-  const Vec3 mean = wsum / wtot;
-  const Vec3 c = b.pos + b.scale * (b.rot * mean);
-  // Weighted variance about the centroid: E|v|^2 - |E v|^2, in world units.
-  r.spread = std::max(0.0, wsq / wtot - mean.squaredNorm()) * b.scale * b.scale;
-  // Move the centroid along the normal to halfway between plane and deepest point.
-  const double hc = (c - a.point).dot(a.normal);
-  r.point = c - (hc + 0.5 * r.depth) * a.normal;
+  if (soft.finish(r, r.depth, a.normal))
+    r.normal = a.normal;  // every vertex is pushed along it: G is parallel to it up to rounding
+  else
+    r.point = pdeep - 0.5 * hmin * a.normal;  // PD at the deepest vertex
   return r;
 }
 

@@ -15,6 +15,12 @@ struct ContactResult {
   // distance of the penetrating vertices from `point` (m^2); 0 for a point
   // contact. Lets the contact law damp rocking of a face lying on a wall.
   double spread = 0;
+  // Faceted contacts (collision/soft_depth.h): the law's elastic force at
+  // `depth` times `gain` is the pair's elastic force (1 for a point contact),
+  // and `twist` times the law's elastic force (N) is a torque on B (N m)
+  // beyond that of the force at `point` (zero for a face on a plane) (m).
+  double gain = 1;
+  Vec3 twist = Vec3::Zero();
 };
 
 }  // namespace grainlab

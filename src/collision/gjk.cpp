@@ -265,10 +265,10 @@ ContactResult collide_convex(const PolytopeShape& a, const PolytopeShape& b, Vec
 }
 // A box wall against a grain: GJK/EPA (or the warm path) for depth and
 // normal. When the normal is one of the box's face normals (a grain pressed on
-// a face of the slab, the usual case), the contact point and patch spread come
-// from the exact plane routine for that face: its depth-weighted point is
-// continuous, so a flat grain face resting on the slab does not jitter as the
-// GJK witness would. Edge and corner contacts keep the witness point.
+// a face of the slab, the usual case), the contact is the exact plane
+// routine's for that face (its soft depth, a conservative force, so a flat
+// grain face resting on the slab neither jitters nor gains energy). Edge and
+// corner contacts keep the witness point.
 ContactResult collide_convex(const BoxShape& a, const PolytopeShape& b, Vec3& dir, bool warm) {
   ContactResult r;
   if (!(warm && warm_penetration(a, b, dir, r))) r = gjk_epa(a, b, dir);
@@ -278,10 +278,7 @@ ContactResult collide_convex(const BoxShape& a, const PolytopeShape& b, Vec3& di
     if (std::abs(c) < 1 - 1e-9) continue;
     const Vec3 n = (c > 0 ? 1.0 : -1.0) * a.rot.col(axis);
     const ContactResult face = collide(PlaneShape{a.pos + a.half[axis] * n, n}, b);
-    if (face.touching) {
-      r.point = face.point;
-      r.spread = face.spread;
-    }
+    if (face.touching) r = face;  // the plane's soft depth (soft_depth.h)
     break;
   }
   return r;

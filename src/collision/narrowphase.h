@@ -11,9 +11,9 @@ namespace grainlab {
 ContactResult collide(const SphereShape& a, const SphereShape& b);
 // Exact plane-sphere; normal = plane normal.
 ContactResult collide(const PlaneShape& a, const SphereShape& b);
-// Exact plane-polytope: depth of the deepest vertex; contact point at the
-// depth-weighted centroid of all penetrating vertices (so a face lying flat on
-// the plane pushes at its middle), moved to halfway between the surfaces.
+// Exact plane-polytope: the soft depth of the vertices below the plane
+// (soft_depth.h): depth D, gain and the point on the line of action of the
+// conservative force (a face lying flat on the plane pushes at its middle).
 ContactResult collide(const PlaneShape& a, const PolytopeShape& b);
 // Exact box-sphere (box_sphere.cpp); normal from the box to the sphere.
 ContactResult collide(const BoxShape& a, const SphereShape& b);
@@ -24,17 +24,14 @@ ContactResult collide(const BoxShape& a, const SphereShape& b);
 // `warm` says dir is this pair's normal from the previous step: then a
 // shallow penetration is found by the local translated-GJK iteration
 // (penetration.h), several times cheaper than EPA; cold calls use EPA.
-// The contact point of a touching polytope pair is not the witness point but
-// the patch centroid of contact_patch below (with ContactResult::spread).
+// A touching polytope pair's contact is then contact_patch's below.
 ContactResult collide_convex(const PolytopeShape& a, const PolytopeShape& b, Vec3& dir, bool warm = false);
 ContactResult collide_convex(const SphereShape& a, const PolytopeShape& b, Vec3& dir);
 
-// For touching polytopes A, B with r's normal: replaces r.point by the centroid
-// of the vertices of each body lying inside the other, weighted by their depth
-// inside it (continuous in the configuration: a vertex entering the overlap
-// has weight 0), moved to halfway between the two supporting planes, and sets
-// r.spread to their weighted tangential variance about it. Keeps the witness
-// point if no vertex lies inside the other body (e.g. edge across edge).
+// For touching polytopes A, B with r's normal and penetration depth: replaces
+// r by the soft depth of the vertices of each body lying inside the other
+// (soft_depth.h: depth, normal, point, gain, twist, spread) when that depth
+// exceeds r's; keeps the witness point otherwise (e.g. edge across edge).
 void contact_patch(const PolytopeShape& a, const PolytopeShape& b, ContactResult& r);
 ContactResult collide_convex(const BoxShape& a, const PolytopeShape& b, Vec3& dir, bool warm = false);
 ContactResult collide_convex(const BoxShape& a, const SphereShape& b, Vec3& dir);

@@ -1,23 +1,24 @@
-// Contact point and patch spread of two touching polytopes (see narrowphase.h).
+// The contact of two touching polytopes (see narrowphase.h): the soft depth
+// of soft_depth.h over the vertices of each body lying inside the other.
 //
-// GJK/EPA (and the warm translated GJK) give a pair of witness points, which
-// for two flat faces in contact is an arbitrary point of the common patch that
-// jumps from step to step. Here the point is instead a weighted centroid of
-// the vertices of each body that lie inside the other, each weighted by how
-// deep it lies inside the other body: w(x) = min(height beyond the other's
-// supporting plane, min over the other's nearby face planes of the depth
-// below the plane). That weight is the (clamped) signed distance of x inside
-// the other polytope, continuous in the configuration and zero when x enters
-// or leaves the overlap, so the point moves continuously (unlike choosing a
-// "feature" by a tolerance band, which switches between a vertex and a face).
+// A vertex x of A is inside B iff it is below every face plane of B; its
+// depth is its distance inside B's nearest face plane (for a point inside a
+// convex body, the distance to its boundary), a continuous function of the
+// two poses, zero when x enters. Only faces near the contact are tried: the
+// faces through B's vertices below A's supporting plane (along the point
+// contact's normal n). B above that plane lies in a half space that A's
+// points do not enter, and B's part below it is bounded by exactly those
+// faces, so a vertex of A is inside B iff it is below them all.
 //
-// Nearby face planes: the faces incident to the other body's vertices beyond
-// this body's supporting plane. Every face of B lying under a vertex x of A
-// that is inside B (height of x at most A's top) has such a vertex, so the
-// set holds the face below x and the side faces next to it.
+// GJK/EPA (or the warm translated GJK) still gives the normal, the
+// penetration depth PD and the candidates; the pair's potential is
+// u(max(PD, D)): where no vertex is inside (edge across edge), PD at the
+// witness points.
 #include "collision/narrowphase.h"
+#include "collision/soft_depth.h"
 
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace grainlab {
@@ -74,32 +75,29 @@ void gather_planes(const ConvexPolytope& poly, const std::vector<Index>& verts, 
       if (w.mark(*it)) out.push_back(*it);
 }
 
-struct Accum {
-  Vec3 ref, n;  // reference point, contact normal
-  Vec3 sum = Vec3::Zero();
-  double sq = 0, tot = 0;
-  void add(const Vec3& x, double w) {
-    const Vec3 d = x - ref;
-    sum += w * d;
-    sq += w * (d - d.dot(n) * n).squaredNorm();  // tangential
-    tot += w;
-  }
-};
-
-// Adds the vertices `verts` of `s` (excess over the other body's supporting
-// plane: base + dot(v, dir)) weighted by their depth inside `o`.
-void add_side(const PolytopeShape& s, const std::vector<Index>& verts, const Vec3& dir, double base,
-              const PolytopeShape& o, const std::vector<Index>& o_planes, Accum& acc) {
+// Adds the vertices `verts` of `s` lying inside `o` to the soft depth: depth =
+// distance inside o's nearest face plane among `o_planes`, pushed out along
+// that plane's normal; `sign` is +1 if s is B (the push on B), -1 if s is A
+// (the reaction on B).
+void add_side(const PolytopeShape& s, const std::vector<Index>& verts, const PolytopeShape& o,
+              const std::vector<Index>& o_planes, double sign, SoftDepth& soft) {
   const ConvexPolytope& poly = *s.poly;
   const auto& planes = o.poly->planes();
   const Mat3 to_o = o.rot.transpose() * s.rot * (s.scale / o.scale);  // local s -> local o
   const Vec3 off = o.rot.transpose() * (s.pos - o.pos) / o.scale;
   for (const Index v : verts) {
     const Vec3& pv = poly.vertex(v);
-    double w = base + pv.dot(dir);  // world units
     const Vec3 xl = to_o * pv + off;
-    for (const Index k : o_planes) w = std::min(w, (planes[k].c - planes[k].m.dot(xl)) * o.scale);
-    if (w > 0) acc.add(s.pos + s.scale * (s.rot * pv), w);
+    double d = std::numeric_limits<double>::infinity();
+    Index best = 0;
+    for (const Index k : o_planes) {
+      const double dk = planes[k].c - planes[k].m.dot(xl);
+      if (dk < d) d = dk, best = k;
+    }
+    if (d > 0 && d < std::numeric_limits<double>::infinity()) {
+      const Vec3 x = s.pos + s.scale * (s.rot * pv), m = o.rot * planes[best].m;
+      soft.add(x, d * o.scale, sign * m, x);
+    }
   }
 }
 
@@ -118,6 +116,8 @@ void contact_patch(const PolytopeShape& a, const PolytopeShape& b, ContactResult
   const double bot_b = hb0 + pb.vertex(sb).dot(nlb);  // B's supporting plane
   if (!(top_a > bot_b)) return;
 
+  // Candidates: A's vertices above B's supporting plane, B's below A's; the
+  // faces that can bound the overlap are the faces through them.
   thread_local Walk walk;
   thread_local std::vector<Index> va, vb, qa, qb;
   if (!collect(pa, sa, nla, ha0 - bot_b, walk, va)) return;
@@ -125,20 +125,12 @@ void contact_patch(const PolytopeShape& a, const PolytopeShape& b, ContactResult
   gather_planes(pa, va, walk, qa);
   gather_planes(pb, vb, walk, qb);
 
-  Accum acc{r.point, n};
-  add_side(a, va, nla, ha0 - bot_b, b, qb, acc);
-  add_side(b, vb, -nlb, top_a - hb0, a, qa, acc);
-  if (!(acc.tot > 0)) return;  // no vertex inside the other: keep the witness point
-  // A whisker of the witness point keeps the result defined as the weights vanish.
-  const double w0 = 1e-9 * r.depth;
-  const Vec3 mean = acc.sum / (acc.tot + w0);
-  Vec3 c = r.point + mean;
-  // Spread in the contact plane: tangential weighted variance.
-  const Vec3 mean_t = mean - mean.dot(n) * n;
-  r.spread = std::max(0.0, acc.sq / (acc.tot + w0) - mean_t.squaredNorm());
-  // Halfway between the two supporting planes.
-  c += (0.5 * (top_a + bot_b) - n.dot(c)) * n;
-  r.point = c;
+  SoftDepth soft(b.pos);
+  add_side(a, va, b, qb, -1.0, soft);
+  add_side(b, vb, a, qa, 1.0, soft);
+  // No vertex inside the other (edge across edge), or D below PD: the point
+  // contact of the penetration depth stays.
+  soft.finish(r, r.depth, n);
 }
 
 }  // namespace grainlab

@@ -92,6 +92,7 @@ struct ContactKinematics {
   Vec3 v_rel;     // velocity of b's material point minus a's, at the contact point
   double m_eff;   // kg
   double r_eff;   // m
+  double gain = 1;  // multiplies the elastic normal force (a faceted contact's |G|, collision/soft_depth.h)
 };
 
 // Force on body b (on a it is the opposite), updating the tangential spring
@@ -105,7 +106,7 @@ Vec3 contact_force(const PairCoefficients& p, const ContactKinematics& c, double
   if (coefficients_out) *coefficients_out = k;
   const double v_n = c.v_rel.dot(c.normal);
   const Vec3 v_t = c.v_rel - v_n * c.normal;
-  const double f_n = std::max(0.0, k.k_n * c.delta - k.c_n * v_n);
+  const double f_n = std::max(0.0, c.gain * k.k_n * c.delta - k.c_n * v_n);
 
   // Keep the spring in the tangent plane, with its length.
   const double len = xi.norm();

@@ -371,10 +371,12 @@ namespace {
 template <typename Law>
 void evaluate(Contact& pc, const PairCoefficients& coeffs, const Vec3& v_rel, const Vec3& w_rel,
               double m_eff, double r_eff, double dt) {
-  const ContactKinematics c{pc.geo.normal, pc.geo.depth, v_rel, m_eff, r_eff};
+  const ContactKinematics c{pc.geo.normal, pc.geo.depth, v_rel, m_eff, r_eff, pc.geo.gain};
   LawCoefficients law;
   pc.force = contact_force<Law>(coeffs, c, dt, pc.xi, &pc.normal_force, &law);
-  pc.torque = patch_damping_torque(law.c_n, pc.geo.spread, c.normal, w_rel);
+  // The faceted contact's torque beyond the force at the point: twist times u'(D).
+  pc.torque = patch_damping_torque(law.c_n, pc.geo.spread, c.normal, w_rel) +
+              (law.k_n * pc.geo.depth) * pc.geo.twist;
 }
 
 }  // namespace

@@ -8,7 +8,7 @@
 //   walls    (x, q, v, force),
 //   pairs, wall_pairs (a, b i32; cache: dir; hint_a, hint_b i32; warm u8),
 //   contacts, wall_contacts (a, b, sub i32; xi; geo: touching u8, depth,
-//            normal, point, spread; force, torque, normal_force),
+//            normal, point, spread, gain, twist; force, torque, normal_force),
 //   x_at_rebuild (3 f64 each), protocol bytes.
 #include "io/checkpoint.h"
 
@@ -27,12 +27,12 @@
 namespace grainlab {
 
 // A new field in these structs must be written below (and the version bumped).
-static_assert(sizeof(ContactResult) == 72, "ContactResult changed: update io/checkpoint.cpp and kCheckpointVersion");
+static_assert(sizeof(ContactResult) == 104, "ContactResult changed: update io/checkpoint.cpp and kCheckpointVersion");
 static_assert(sizeof(PairCache) == 40, "PairCache changed: update io/checkpoint.cpp and kCheckpointVersion");
 // CandidatePair::first_contact is a checked hint, not state: it is not written
 // and reads back as kUnknownContacts.
 static_assert(sizeof(CandidatePair) == 56, "CandidatePair changed: update io/checkpoint.cpp and kCheckpointVersion");
-static_assert(sizeof(Contact) == 168, "Contact changed: update io/checkpoint.cpp and kCheckpointVersion");
+static_assert(sizeof(Contact) == 200, "Contact changed: update io/checkpoint.cpp and kCheckpointVersion");
 
 namespace {
 
@@ -71,6 +71,7 @@ void write_contact(Writer& w, const Contact& p) {
   w.f64(p.geo.depth);
   w.vec(p.geo.normal), w.vec(p.geo.point);
   w.f64(p.geo.spread);
+  w.f64(p.geo.gain), w.vec(p.geo.twist);
   w.vec(p.force), w.vec(p.torque);
   w.f64(p.normal_force);
 }
@@ -83,6 +84,7 @@ Contact read_contact(Reader& r) {
   p.geo.depth = r.f64();
   p.geo.normal = r.vec(), p.geo.point = r.vec();
   p.geo.spread = r.f64();
+  p.geo.gain = r.f64(), p.geo.twist = r.vec();
   p.force = r.vec(), p.torque = r.vec();
   p.normal_force = r.f64();
   return p;
@@ -91,7 +93,7 @@ Contact read_contact(Reader& r) {
 constexpr std::size_t kBodyBytes = 13 * 8;
 constexpr std::size_t kWallBytes = 13 * 8;
 constexpr std::size_t kPairBytes = 4 * 4 + 1 + 3 * 8;
-constexpr std::size_t kContactBytes = 3 * 4 + 1 + 18 * 8;
+constexpr std::size_t kContactBytes = 3 * 4 + 1 + 22 * 8;
 
 }  // namespace
 

@@ -47,10 +47,15 @@ TEST(ContactPatch, OffsetFaceContactPushesAtOverlapCentroid) {
       Vec3 dir = warm ? Vec3(0, 0, 1) : Vec3(0.3, 0.2, 1);
       const ContactResult r = collide_convex(a, b, dir, warm);
       ASSERT_TRUE(r.touching);
-      EXPECT_NEAR(r.depth, delta, 1e-10);
+      // Soft depth of equally deep vertices: (4/3) delta, gain 4/3 (soft_depth.h).
+      EXPECT_NEAR(r.depth, 4.0 / 3.0 * delta, 1e-10);
+      EXPECT_NEAR(r.gain, 4.0 / 3.0, 1e-6);
       EXPECT_NEAR(r.point.x(), c.centroid.x(), 1e-4) << "warm " << warm;
       EXPECT_NEAR(r.point.y(), c.centroid.y(), 1e-4) << "warm " << warm;
-      EXPECT_NEAR(r.point.z(), 5e-3 - 0.5 * delta, 1e-9);
+      // On the line of action at the vertices' d^2-weighted centroid: between
+      // the two surfaces.
+      EXPECT_GE(r.point.z(), 5e-3 - delta - 1e-12);
+      EXPECT_LE(r.point.z(), 5e-3 + 1e-12);
       EXPECT_GT(r.spread, 1e-6);  // patch of mm size: spread ~ mm^2
     }
   }

@@ -44,8 +44,12 @@ Slide slide_block(double theta, double mu) {
   w.add_plane(Vec3::Zero(), normal, m, "incline");
   const double dt = w.critical_time_step() * 0.2;
 
-  // Settle onto the plane, then measure over a window.
-  const int settle = static_cast<int>(0.02 / dt), window = static_cast<int>(0.05 / dt);
+  // Settle onto the plane, then measure over a window. The drop from the
+  // initial overlap slips the block near the friction angle: at 26 deg the
+  // soft-depth face contact (a face is twice as stiff as one Hertz point)
+  // slides 20, 10 and 1.1 um in the first three 10 ms and then not at all
+  // (kinetic energy 1e-32 J from 40 ms on), so the window starts at 40 ms.
+  const int settle = static_cast<int>(0.04 / dt), window = static_cast<int>(0.05 / dt);
   for (int i = 0; i < settle; ++i) w.step(dt);
   // Least-squares fit s(t) = s0 + v0 t + a t^2 / 2.
   Eigen::Matrix3d ata = Eigen::Matrix3d::Zero();
