@@ -23,7 +23,7 @@ Specimen place_loose_specimen(World& world, const DirectShearSpec& spec, Index g
   }
   sp.mean_diameter = std::cbrt(6.0 * mean_volume / std::numbers::pi);
 
-  const double L = spec.box.length, W = spec.box.width, H = spec.box.height;
+  const double L = spec.box.length, W = spec.box.width;
   const double e_target = spec.target_void_ratio();
   const double wanted = specimen_grain_count(spec.box, e_target, mean_volume);
   refuse_impossible_specimen(wanted, available_memory_bytes(), spec.box, sp.mean_diameter,
