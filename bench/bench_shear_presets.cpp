@@ -15,6 +15,7 @@
 // Every run uses the same preparation (deposition friction 0.12 under 100 g,
 // then the cap servo), so the achieved density differs by shape, as it does
 // for one pluviation procedure in the lab; the target tolerance is open.
+#include "core/wait_policy.h"
 #include "dynamics/laws/registry.h"
 #include "core/error.h"
 #include "core/parallel.h"
@@ -124,6 +125,7 @@ void damping(const Options& o) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  grainlab::use_passive_wait_by_default(argv);  // as grainlab runs (core/wait_policy.h)
   Options o;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];

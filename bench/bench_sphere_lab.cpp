@@ -8,6 +8,7 @@
 // times during the shear, wall times).
 //
 //   build/bench_sphere_lab [--strain S] [--threads N]   (default: 0.10; 1 then 2)
+#include "core/wait_policy.h"
 #include "core/parallel.h"
 #include "core/timer.h"
 #include "lab/direct_shear.h"
@@ -89,6 +90,7 @@ void run(double strain, int threads) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  grainlab::use_passive_wait_by_default(argv);  // as grainlab runs (core/wait_policy.h)
   double strain = 0.10;
   std::vector<int> threads{1, 2};
   for (int i = 1; i < argc; ++i) {

@@ -39,6 +39,7 @@
 // deposition. --quick (a 4 x 4 x 2.6 mm box, 4 shapes of 100 faces, strains
 // 6 % and 12 %) checks the whole chain in minutes. DIR/study.json holds what
 // the runs do not: the indices, the bisection, the wall times.
+#include "core/wait_policy.h"
 #include "core/error.h"
 #include "core/parallel.h"
 #include "core/timer.h"
@@ -274,6 +275,7 @@ void estimate(const Options& o) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  grainlab::use_passive_wait_by_default(argv);  // as grainlab runs (core/wait_policy.h)
   Options o;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];

@@ -3,6 +3,7 @@
 #include "apps/commands.h"
 #include "core/error.h"
 #include "core/parallel.h"
+#include "core/wait_policy.h"
 
 #include <fmt/format.h>
 
@@ -11,6 +12,7 @@
 using namespace grainlab;
 
 int main(int argc, char** argv) {
+  use_passive_wait_by_default(argv);
   CLI::App app{
       "grainlab: a discrete-element engine and virtual soil laboratory for realistic sand "
       "grains.\nSI units throughout (m, kg, s, N, Pa)."};

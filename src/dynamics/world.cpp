@@ -162,11 +162,11 @@ void World::step(double dt) {
       const double ratio = dt / est.critical;
       input_error(
           "time step {:.3g} s is above the critical step {:.3g} s of this model (set by grain {} "
-          "with contact stiffness {:.3g} N/m at an overlap of {:.2g} of its radius): the run would "
-          "explode. Use a time step of at most {:.3g} s (about a tenth of the critical step is "
+          "with contact stiffness {:.3g} N/m at an overlap of {:.2g} of its radius, damping ratio "
+          "{:.2f}): the run would explode. Use a time step of at most {:.3g} s (about a tenth of the critical step is "
           "accurate), or scale the density by at least {:.3g} (numerics.density_scaling) for a "
           "quasi-static test",
-          dt, est.critical, est.limiting_body, est.stiffness, settings.expected_overlap_fraction,
+          dt, est.critical, est.limiting_body, est.stiffness, settings.expected_overlap_fraction, est.damping_ratio,
           est.critical, ratio * ratio);
     }
     checked_dt_ = dt;

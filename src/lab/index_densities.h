@@ -11,7 +11,7 @@
 //     friction, until the cap's stress is within 5 % and the kinetic energy is
 //     small against the elastic (the protocol's compaction rest test). This is
 //     as far as this method goes: no vibration, no cycles of load.
-//   e_max (loosest): deposition with friction loose_friction (default 0.4,
+//   e_max (loosest): deposition with friction loose_friction (default 1.0,
 //     kLoosestDepositionFriction) and no compaction; the
 //     void ratio is measured under the grains' own weight (at 100 g S: the
 //     stress at the floor is rho 100 g S h, about 1 MPa at S = 100 for 8

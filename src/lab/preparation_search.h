@@ -7,7 +7,7 @@
 // the trial that lands on the target IS the specimen (no extrapolation from
 // a smaller box), and the run continues from it.
 // The void ratio e(mu) grows with mu (friction holds the grains apart while
-// they settle): mu = 0 gives the densest specimen, mu_max (0.4) the loosest.
+// they settle): mu = 0 gives the densest specimen, mu_max (1.0) the loosest.
 // The search keeps a bracket [mu_lo, mu_hi] with e(mu_lo) < e_target <
 // e(mu_hi) and picks the next mu by linear interpolation of e in
 // u = mu / (mu + 0.1) (e changes most between mu = 0 and 0.3; in u the curve
@@ -32,13 +32,13 @@
 namespace grainlab {
 
 // The highest deposition friction the preparation uses (the loosest end of
-// the search and the e_max preparation of lab/index_densities.h). Measured on
-// 300 glass beads in a 6 d_max box: at 0.2 and 0.4 deposition comes to rest in
-// 3000-10000 steps; at 0.6 and 1.0 it never does: the kinetic energy stays
-// near 1e-4 J (grains at ~0.1 m/s, some thrown out of the pile) and the step
-// slows as they spread, i.e. the contacts pump energy in at high friction
-// (a contact-model problem, reported; not hidden here).
-inline constexpr double kLoosestDepositionFriction = 0.4;
+// the search and the e_max preparation of lab/index_densities.h). Until the
+// critical step included the contact damping (dynamics/time_step.h),
+// deposition at friction 0.6 or 1.0 never came to rest (beads spun up to
+// 3e3 rad/s) and this was 0.4, where glass beads gave e_max = 0.626, barely
+// above e_min. Now glass beads at friction 1.0 come to rest in ~3600 steps
+// (550 beads, 8 d_max box) at bulk e_max = 0.715, a random loose packing.
+inline constexpr double kLoosestDepositionFriction = 1.0;
 
 struct PreparationSearchOptions {
   double max_friction = kLoosestDepositionFriction;  // the loosest end of the search
