@@ -29,7 +29,9 @@ namespace {
 // e_min = frictionless deposition + compaction under 100 kPa, e_max =
 // deposition with friction 0.5 + compaction under 100 kPa, measured with
 // `grainlab run` on the spec below (deposition_friction 0 and 0.5). With
-// friction 1.0 the spheres never settle (their spin does not decay); a pile
+// friction 1.0 the spheres did not settle until session 5 (their spin did
+// not decay: the critical step ignored the damping, dynamics/time_step.h);
+// they do now, but this looser end is not re-measured here. A pile
 // measured without compaction (cap lowered onto it) gives e = 1.13 for the
 // frictionless and 1.08 for the frictional deposition: its rough top, not its
 // density, sets that number, so e_max is taken after compaction.
