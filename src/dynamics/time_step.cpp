@@ -37,9 +37,10 @@ TimeStepEstimate critical_time_step(const Model& model, double fraction) {
         const LawCoefficients k = model.law->at(p, delta, share * b.radius, share * b.mass);
         const double k_n = model.law->stiffness(k);
         for (const auto& [stiff, damp] : {std::pair{k_n, k.c_n}, std::pair{k.k_t, k.c_t}}) {
-          const double dt = damped_critical_step(stiff, exact_point_mass ? damp : 0.0, m_point);
+          const double used = exact_point_mass ? damp : 0.0;
+          const double dt = damped_critical_step(stiff, used, m_point);
           if (dt < best.critical)
-            best = {dt, static_cast<Index>(i), stiff, damp / (2.0 * std::sqrt(stiff * m_point))};
+            best = {dt, static_cast<Index>(i), stiff, used / (2.0 * std::sqrt(stiff * m_point))};
         }
       }
     }

@@ -48,7 +48,7 @@ struct TimeStepEstimate {
   double critical = 0;        // s
   Index limiting_body = -1;   // the body that sets it
   double stiffness = 0;       // N/m of the limiting contact
-  double damping_ratio = 0;   // zeta of the limiting contact's oscillator
+  double damping_ratio = 0;   // zeta the limit was computed with (0 for faceted grains, see above)
 };
 
 // The stable limit 2 (sqrt(1 + zeta^2) - zeta) / omega of one damped spring
