@@ -6,7 +6,7 @@
 // DEM step has several parallel loops, and when another CPU-bound process
 // holds a core, the spinning threads burn the time slices the descheduled
 // thread needs, and every barrier waits for it. Measured (2026-11-30, this
-// 2-core machine, `/work/exp/threads.sh`: bench_scenes --only spheres
+// 2-core machine, alternating the three settings: bench_scenes --only spheres
 // --grains 2000 --settle 1000 --steps 1500, 2 threads, grain-steps/s, two
 // runs each; "loaded" = one busy-loop shell process beside it):
 //                     quiet                loaded
