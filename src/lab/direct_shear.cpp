@@ -9,6 +9,33 @@
 
 namespace grainlab {
 
+namespace {
+
+// For a phase that does not come to rest: the grain that holds the most
+// kinetic energy, its share, speed, spin and touching contacts (a rattler
+// spinning in its cage has few or none: a point contact cannot stop a spin
+// about its own normal).
+std::string most_energetic_grain(const World& w) {
+  const std::size_t n = w.state.bodies.size();
+  if (n == 0) return "no grains";
+  std::size_t worst = 0;
+  double worst_ke = -1, total = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double ke = kinetic_energy_of(w.model.bodies[i], w.state.bodies[i]);
+    total += ke;
+    if (ke > worst_ke) worst_ke = ke, worst = i;
+  }
+  int contacts = 0;
+  const Index g = static_cast<Index>(worst);
+  for (const Contact& c : w.state.contacts) contacts += in_contact(c) && (c.a == g || c.b == g);
+  for (const Contact& c : w.state.wall_contacts) contacts += in_contact(c) && c.b == g;
+  const BodyState& b = w.state.bodies[worst];
+  return fmt::format("grain {} holds {:.0f} % of it ({:.3g} m/s, {:.3g} rad/s, {} contacts)", worst,
+                     total > 0 ? 100 * worst_ke / total : 0.0, b.v.norm(), b.w.norm(), contacts);
+}
+
+}  // namespace
+
 const char* shear_phase_name(ShearPhase p) {
   switch (p) {
     case ShearPhase::Deposit: return "deposit";
@@ -126,9 +153,10 @@ bool DirectShearTest::check_rest(ShearPhase p) {
   if (!rest && in_phase > 400000)
     throw RunError(fmt::format(
         "the {} phase did not come to rest in {} steps (normal stress {:.4g} Pa, unbalanced force "
-        "ratio {:.3g} averaged over {} steps, kinetic energy {:.3g} J): try a smaller time step, more "
-        "damping (lower restitution) or a larger consolidation.max_unbalanced",
-        shear_phase_name(p), in_phase, normal_stress(), averaged_unbalanced, window, world_.kinetic_energy()));
+        "ratio {:.3g} averaged over {} steps, kinetic energy {:.3g} J; {}): try a smaller time step, "
+        "more damping (lower restitution) or a larger consolidation.max_unbalanced",
+        shear_phase_name(p), in_phase, normal_stress(), averaged_unbalanced, window, world_.kinetic_energy(),
+        most_energetic_grain(world_)));
   return rest;
 }
 
