@@ -1,8 +1,11 @@
 // Closed-form narrowphase: sphere-sphere, plane-sphere, plane-polytope.
 #include "collision/narrowphase.h"
+#include "collision/soft_depth.h"
 #include "collision/test_shapes.h"
 
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 namespace grainlab {
 namespace {
@@ -56,9 +59,9 @@ TEST(Analytic, BoxFlatOnPlanePushesAtFaceCentre) {
                     static_cast<Index>(t % 8)};
     const ContactResult r = collide(PlaneShape{Vec3::Zero(), Vec3::UnitZ()}, s);
     EXPECT_TRUE(r.touching);
-    // Four corners equally deep: soft depth (4/3) depth, gain 4/3 (soft_depth.h).
-    EXPECT_NEAR(r.depth, 4.0 / 3.0 * depth, 1e-13);
-    EXPECT_NEAR(r.gain, 4.0 / 3.0, 1e-12);
+    // Four corners equally deep: soft depth kappa depth, gain kappa (soft_depth.h).
+    EXPECT_NEAR(r.depth, SoftDepth::kappa * depth, 1e-13);
+    EXPECT_NEAR(r.gain, SoftDepth::kappa, 1e-12);
     EXPECT_LT(r.twist.norm(), 1e-12);
     EXPECT_NEAR(r.point.x(), c.x(), 1e-12);
     EXPECT_NEAR(r.point.y(), c.y(), 1e-12);
@@ -80,34 +83,35 @@ TEST(Analytic, TiltedPolytopeDeepestVertexAndWeightedPoint) {
     s.hint = static_cast<Index>(rng.uniform() * static_cast<double>(hull.poly.size()));
     const auto v = testing::world_vertices(s);
     // Brute force: heights, deepest vertex and the soft depth of those below:
-    // D = (4/3) S3/S2, g_i = (4/3) d_i (3 d_i S2 - 2 S3)/S2^2, the point at the
-    // g-weighted centroid across the normal, halfway down at the
-    // d^2-weighted one along it; the point contact at PD unless D > PD and
-    // sum g > 0.
-    double hmin = 1e300, s1 = 0, s2 = 0, s3 = 0;
+    // D = kappa S_{k+1}/S_k, g_i = kappa d_i^{k-1} ((k+1) d_i S_k - k S_{k+1})/S_k^2,
+    // the point at the g-weighted centroid across the normal, halfway down at
+    // the d^k-weighted one along it; the point contact at PD unless D > PD
+    // and sum g > 0.
+    constexpr int k = SoftDepth::kPower;
+    double hmin = 1e300, sk = 0, sk1 = 0;
     for (const Vec3& x : v) {
       const double h = (x - p.point).dot(p.normal);
       hmin = std::min(hmin, h);
-      if (h < 0) s1 += -h, s2 += h * h, s3 += -h * h * h;
+      if (h < 0) sk += std::pow(-h, k), sk1 += std::pow(-h, k + 1);
     }
-    Vec3 xg = Vec3::Zero(), x2 = Vec3::Zero();
+    Vec3 xg = Vec3::Zero(), xk = Vec3::Zero();
     double sg = 0;
     for (const Vec3& x : v) {
       const double d = -(x - p.point).dot(p.normal);
       if (d <= 0) continue;
-      const double g = 4.0 / 3.0 * d * (3 * d * s2 - 2 * s3) / (s2 * s2);
-      xg += g * x, sg += g, x2 += d * d * (x + 0.5 * d * p.normal);
+      const double g = SoftDepth::kappa * std::pow(d, k - 1) * ((k + 1) * d * sk - k * sk1) / (sk * sk);
+      xg += g * x, sg += g, xk += std::pow(d, k) * (x + 0.5 * d * p.normal);
     }
     const ContactResult r = collide(p, s);
     ASSERT_EQ(r.touching, -hmin > 0);
     ASSERT_EQ(r.normal, p.normal);
     if (!r.touching) continue;
-    const double soft = s2 > 0 ? 4.0 / 3.0 * s3 / s2 : 0;
+    const double soft = sk > 0 ? SoftDepth::kappa * sk1 / sk : 0;
     if (soft > -hmin && sg > 0) {
       ASSERT_NEAR(r.depth, soft, 1e-12);
       ASSERT_NEAR(r.gain, sg, 1e-9);
-      xg /= sg, x2 /= s2;
-      const Vec3 expect = xg - (xg - x2).dot(p.normal) * p.normal;
+      xg /= sg, xk /= sk;
+      const Vec3 expect = xg - (xg - xk).dot(p.normal) * p.normal;
       ASSERT_LT((r.point - expect).norm(), 1e-9) << "case " << t;
     } else {
       ASSERT_NEAR(r.depth, -hmin, 1e-12);

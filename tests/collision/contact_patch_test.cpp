@@ -4,6 +4,8 @@
 #include "collision/narrowphase.h"
 #include "test_shapes.h"
 
+#include "collision/soft_depth.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -47,9 +49,9 @@ TEST(ContactPatch, OffsetFaceContactPushesAtOverlapCentroid) {
       Vec3 dir = warm ? Vec3(0, 0, 1) : Vec3(0.3, 0.2, 1);
       const ContactResult r = collide_convex(a, b, dir, warm);
       ASSERT_TRUE(r.touching);
-      // Soft depth of equally deep vertices: (4/3) delta, gain 4/3 (soft_depth.h).
-      EXPECT_NEAR(r.depth, 4.0 / 3.0 * delta, 1e-10);
-      EXPECT_NEAR(r.gain, 4.0 / 3.0, 1e-6);
+      // Soft depth of equally deep vertices: kappa delta, gain kappa (soft_depth.h).
+      EXPECT_NEAR(r.depth, SoftDepth::kappa * delta, 1e-10);
+      EXPECT_NEAR(r.gain, SoftDepth::kappa, 1e-6);
       EXPECT_NEAR(r.point.x(), c.centroid.x(), 1e-4) << "warm " << warm;
       EXPECT_NEAR(r.point.y(), c.centroid.y(), 1e-4) << "warm " << warm;
       // On the line of action at the vertices' d^2-weighted centroid: between
