@@ -55,8 +55,8 @@ struct SpecimenSpec {
   std::string indices = "lab";     // "lab": Dr on the lab's e_min/e_max of the real sand; "own": Dr on
                                    // the grains' own index voids (own_e_min/own_e_max, measured by
                                    // `grainlab grains index` or by the run when not given). Default "lab"
-                                   // until the own e_max is a loose packing: the lattice deposition gives
-                                   // beads e_max 0.626 against e_min 0.590 (docs/direct_shear.md)
+                                   // until the demo and the study are re-measured on own indices
+                                   // (docs/direct_shear.md, "Whose Dr")
   double own_e_max = 0;            // the grains' own loosest void ratio; 0 = measure it (lab/index_densities.h)
   double own_e_min = 0;            // the grains' own densest void ratio; 0 = measure it
   double e_max = 0.86;             // lab index void ratios of the sand (Griffin sand, paper section 3)
