@@ -5,40 +5,33 @@
 // writes run folders and one comparison report (scripts/study_report.py).
 //
 //   build/study_four_sands [--quick] [--out DIR] [--grainlab PATH] [--threads N]
-//                          [--only sands|damping] [--estimate] [--emin-friction F]
+//                          [--only sands|damping] [--estimate]
 //
-// Per sand (Table 1 material through lab/sand_presets.h):
-//   1. own index void ratios, in the study's own box with the study's grain
-//      count (the count of specimen.void_ratio = the sand preset's Dr 0.9
-//      target): e_min = frictionless deposition under 100 g and compaction
-//      under the 100 kPa cap, after consolidation, the densest this method
-//      makes (faceted grains: deposition friction 0.05 unless --emin-friction
-//      says otherwise: frictionless faceted grains did not come to rest
-//      before the resting contact fix of issue 10 item 1, and with 0.02
-//      rounded grains' compaction did not either in 4e5 steps, unbalanced
-//      force ratio 0.05; 0.05 gives the demo's grains e = 0.51); e_max = deposition
-//      and compaction with friction 0.5, after compaction, the loosest it
-//      makes (spheres deposited with friction 1.0 never settle: their spin
-//      does not decay; with the sand's own friction glass beads span no range:
-//      e 0.8607 frictionless, 0.8630 at 0.12 in the quick box). A specimen
-//      deposited with more friction than the test's collapses part way in
-//      consolidation, so the bisection below stays at or under the test's;
-//   2. the deposition friction that gives Dr = 0.9 on those indices, by
-//      bisection over preparations (e falls as the friction falls), accepted
-//      within Dr +- 0.05;
-//   3. the shear run: `grainlab run` on the config written to
-//      DIR/configs/<sand>.toml (the same spec and seed, so the same
-//      preparation, bit for bit), to 10 % strain (angular grains to 20 %,
-//      Appendix 3), at I = 9e-4 (<= 1e-3, quasi-static).
+// Per sand (Table 1 material through lab/sand_presets.h), one `grainlab run`
+// on the config written to DIR/configs/<sand>.toml, which does the whole
+// preparation as any run asking for a Dr on its own indices does:
+//   1. the own index void ratios (lab/index_densities.h: e_min frictionless
+//      deposition and compaction, e_max deposition at friction 1.0, in a box
+//      10 d_max square, bulk void ratios), kept in the run folder;
+//   2. the deposition friction that gives Dr 0.9 +- 0.05 on them, by the
+//      bisection of lab/preparation_search.h; the trial that lands is the
+//      specimen;
+//   3. the shear to 10 % strain (angular grains to 20 %, Appendix 3) at
+//      I = 9e-4 (<= 1e-3, quasi-static).
+// DIR/study.json copies from each run.json what the report tabulates
+// (e_min, e_max, the friction, the void ratio, the trials) and the wall times.
 // Damping set: glass beads, contact_law hertz-user (the paper's k_n, k_t,
 // gamma_n, gamma_t), (gamma_n, gamma_t) = (20, 10), (40, 20), (80, 40), with
-// glass beads' deposition friction from step 2.
+// glass beads' own indices and deposition friction from their run (each
+// damping run reports the density it reaches).
 //
 // The full study (1000 faces, box 12 x 12 x 6 largest grains) takes hours:
 // --estimate prints an estimate from the measured step rate of each sand's
 // deposition. --quick (a 4 x 4 x 2.6 mm box, 4 shapes of 100 faces, strains
-// 6 % and 12 %) checks the whole chain in minutes. DIR/study.json holds what
-// the runs do not: the indices, the bisection, the wall times.
+// 6 % and 12 %) checks the chain (configs, runs, the search, study.json,
+// the report), not the densities: it targets the lab's indices and skips the
+// own index measurement (see base_spec). --only damping still runs
+// the glass beads' run first (their indices and friction).
 #include "core/wait_policy.h"
 #include "core/error.h"
 #include "core/parallel.h"
@@ -71,7 +64,6 @@ struct Options {
   std::string grainlab;  // default: next to this program
   std::string only;
   int threads = 0;
-  double emin_friction = 0.05;  // faceted grains' e_min deposition friction (spheres: 0)
 };
 
 struct Sand {
@@ -108,53 +100,26 @@ DirectShearSpec base_spec(const Options& o, const Sand& s) {
   spec.numerics.inertial_number = 9e-4;
   spec.numerics.threads = o.threads;
   spec.seed = 7;
-  // The grain count follows specimen.void_ratio: the preset's Dr 0.9 target,
-  // the same for every preparation of this sand.
-  spec.specimen.void_ratio = spec.specimen.e_max - kTargetDr * (spec.specimen.e_max - spec.specimen.e_min);
-  spec.specimen.tolerance = 10;  // preparations report what they reach
+  // Dr 0.9 on the grains' own indices, the deposition friction found by the
+  // run's bisection (the run measures the indices first).
+  spec.specimen.indices = "own";
+  spec.specimen.relative_density = kTargetDr;
+  spec.specimen.relative_density_tolerance = kDrTolerance;
+  spec.specimen.deposition_friction = -1;
+  // --quick checks the chain, not the densities: the quick box's bulk (1.5
+  // mean diameters from every wall) is a grain or two thick and its void
+  // ratio scatters by more than the whole index range (measured: glass
+  // beads, own e_min 0.583 in the index box, 0.678-0.708 in the quick box at
+  // friction 0-0.01), and measuring faceted grains' own indices in the index
+  // box takes over 7 minutes a sand. So it targets Dr 0.9 on the sand's lab
+  // indices and takes the search's first trial.
+  if (o.quick) {
+    spec.specimen.indices = "lab";
+    spec.specimen.tolerance = 10;
+  }
   spec.output.checkpoint_interval = 600;
   spec.output.snapshot_interval = 0;
   return spec;
-}
-
-struct Prep {
-  double e = NAN;
-  double wall_s = 0;
-  std::int64_t steps = 0;
-  double steps_per_s = 0;
-  std::size_t grains = 0;
-  std::string error;
-};
-
-// Deposition and compaction only; the void ratio after compaction.
-Prep prepare(const DirectShearSpec& spec, ShearPhase until = ShearPhase::Shear) {
-  Prep p;
-  Stopwatch clock;
-  try {
-    DirectShearTest t(spec);
-    t.world().settings.threads = spec.numerics.threads;
-    p.grains = t.world().model.bodies.size();
-    while (t.phase() < until) t.advance(1000);
-    p.e = t.achieved_void_ratio();
-    p.steps = t.world().state.step;
-  } catch (const RunError& e) {
-    p.error = e.what();
-  }
-  p.wall_s = clock.seconds();
-  p.steps_per_s = p.steps / std::max(1e-9, p.wall_s);
-  return p;
-}
-
-Prep prepare_with_friction(DirectShearSpec spec, double friction, ShearPhase until = ShearPhase::Shear) {
-  spec.specimen.deposition_friction = friction;
-  return prepare(spec, until);
-}
-
-nlohmann::json prep_json(const Prep& p, double friction) {
-  nlohmann::json j = {{"deposition_friction", friction}, {"void_ratio", p.e}, {"wall_s", p.wall_s},
-                      {"steps", p.steps}, {"grains", p.grains}};
-  if (!p.error.empty()) j["error"] = p.error;
-  return j;
 }
 
 // Runs `grainlab run` on spec (written to DIR/configs/name.toml) into DIR/name.
@@ -178,71 +143,27 @@ void save(const Options& o, const nlohmann::json& study) {
   write_json_file(fs::path(o.out) / "study.json", study);
 }
 
-// Own indices and the Dr 0.9 deposition friction of one sand.
-nlohmann::json prepare_sand(const Options& o, const Sand& s, DirectShearSpec& spec) {
-  nlohmann::json j = {{"name", s.name}, {"sand_preset", s.preset}, {"grain_class", spec.grains.preset}};
-  fmt::print("{}: {} grains of {} faces, box {:.2f} x {:.2f} x {:.2f} mm\n", s.name, spec.grains.preset,
-             spec.grains.faces, spec.box.length * 1e3, spec.box.width * 1e3, spec.box.height * 1e3);
-  const double min_friction = spec.grains.preset == "glass-beads" ? 0.0 : o.emin_friction;
-  const double loose_friction = 0.5;
-  const Prep dense = prepare_with_friction(spec, min_friction);
-  const Prep loose = prepare_with_friction(spec, loose_friction, ShearPhase::Consolidate);
-  if (!dense.error.empty() || !loose.error.empty())
-    throw RunError(fmt::format("{}: index preparation failed: {}{}", s.name, dense.error, loose.error));
-  const double e_min = dense.e, e_max = loose.e;
-  j["e_min"] = e_min, j["e_max"] = e_max;
-  j["e_min_deposition_friction"] = min_friction;
-  j["e_max_deposition_friction"] = loose_friction;
-  j["index_preparations"] = {prep_json(dense, min_friction), prep_json(loose, loose_friction)};
-  fmt::print("  own indices: e_min {:.4f} (friction {:g}), e_max {:.4f} (friction {:g}); {} grains, {:.0f} s\n",
-             e_min, min_friction, e_max, loose_friction, dense.grains, dense.wall_s + loose.wall_s);
-  if (!(e_max > e_min + 0.01))
-    throw RunError(fmt::format("{}: e_max {:.4f} is not above e_min {:.4f}: the box is too small to tell dense "
-                               "from loose", s.name, e_max, e_min));
-
-  // Bisection on the deposition friction for Dr = 0.9.
-  const double e_target = e_max - kTargetDr * (e_max - e_min);
-  double lo = min_friction, hi = spec.material.grain.friction;  // e(lo) <= e_target, hopefully <= e(hi)
-  double friction = NAN, e = NAN;
-  nlohmann::json trials = nlohmann::json::array();
-  for (int it = 0; it < (o.quick ? 4 : 7); ++it) {
-    const double mid = 0.5 * (lo + hi);
-    const Prep p = prepare_with_friction(spec, mid);
-    trials.push_back(prep_json(p, mid));
-    if (!p.error.empty()) {
-      lo = mid;
-      continue;
-    }
-    const double dr = (e_max - p.e) / (e_max - e_min);
-    fmt::print("  deposition friction {:.4f}: e {:.4f}, Dr {:.3f}\n", mid, p.e, dr);
-    std::fflush(stdout);
-    if (std::abs(dr - kTargetDr) <= kDrTolerance) {
-      friction = mid, e = p.e;
-      break;
-    }
-    (dr > kTargetDr ? lo : hi) = mid;
+// What the report tabulates, from the run's run.json into the study's record;
+// the spec gets the own indices and the friction the run found.
+void copy_preparation(const Options& o, const std::string& name, DirectShearSpec& spec, nlohmann::json& record) {
+  const fs::path run_json = fs::path(o.out) / name / "run.json";
+  if (!fs::exists(run_json)) {
+    record["error"] = fmt::format("no {}: the run failed (see its messages above)", run_json.string());
+    return;
   }
-  j["bisection"] = trials;
-  if (std::isnan(friction)) {
-    // The densest state met the tolerance: Dr(e_min) = 1 is within 0.1 of
-    // 0.9 only if the trials say so; otherwise keep the closest trial.
-    double best = 1e9;
-    for (const auto& t : trials)
-      if (!t.contains("error")) {
-        const double dr = (e_max - t["void_ratio"].get<double>()) / (e_max - e_min);
-        if (std::abs(dr - kTargetDr) < best) best = std::abs(dr - kTargetDr), friction = t["deposition_friction"],
-                                                e = t["void_ratio"];
-      }
-    j["bisection_note"] = fmt::format("no trial within Dr {} +- {}: the closest was kept", kTargetDr, kDrTolerance);
+  const nlohmann::json run = nlohmann::json::parse(std::ifstream(run_json));
+  const nlohmann::json& p = run.at("preparation");
+  record["e_min"] = p.value("own_e_min", NAN);
+  record["e_max"] = p.value("own_e_max", NAN);
+  record["deposition_friction"] = p.value("deposition_friction", NAN);
+  record["prepared_void_ratio"] = p.value("bulk_void_ratio", NAN);
+  record["relative_density"] = p.value("relative_density_own", NAN);
+  if (run.contains("specimen_preparation")) record["specimen_preparation"] = run["specimen_preparation"];
+  if (p.contains("own_e_min") && p.contains("own_e_max")) {
+    spec.specimen.own_e_min = p["own_e_min"];
+    spec.specimen.own_e_max = p["own_e_max"];
   }
-  spec.specimen.e_min = e_min;
-  spec.specimen.e_max = e_max;
-  spec.specimen.relative_density = kTargetDr;
-  spec.specimen.deposition_friction = friction;
-  j["deposition_friction"] = friction;
-  j["prepared_void_ratio"] = e;
-  j["target_void_ratio"] = e_target;
-  return j;
+  spec.specimen.deposition_friction = p.at("deposition_friction");
 }
 
 void estimate(const Options& o) {
@@ -252,7 +173,9 @@ void estimate(const Options& o) {
   fmt::print("Estimate of the full study ({} threads): each sand's rate from 2000 deposition steps\n",
              resolve_threads(o.threads));
   for (const Sand& s : kSands) {
-    const DirectShearSpec spec = base_spec(full, s);
+    DirectShearSpec spec = base_spec(full, s);
+    spec.specimen.indices = "lab";  // the rate only: no index measurement, no search
+    spec.specimen.deposition_friction = 0.12;
     DirectShearTest t(spec);
     t.world().settings.threads = spec.numerics.threads;
     Stopwatch clock;
@@ -261,7 +184,7 @@ void estimate(const Options& o) {
     const double shear_steps = spec.shear.final_strain * spec.box.length / (t.shear_speed() * t.time_step());
     // Preparation: about 3e4 steps each (deposition 100 g, compaction,
     // consolidation; 1.4e4 in the 6 mm sphere box of tests/lab), 2 for the
-    // indices, up to 7 for the bisection, 1 in the run.
+    // indices (in a box about as large), up to 8 trials of the search.
     const double prep_steps = 10 * 3e4;
     const int runs = std::string(s.name) == "glass-beads" ? 4 : 1;  // + the damping set
     const double seconds = (prep_steps + runs * shear_steps) / rate;
@@ -286,10 +209,9 @@ int main(int argc, char** argv) {
     else if (a == "--grainlab" && has_value) o.grainlab = argv[++i];
     else if (a == "--threads" && has_value) o.threads = std::stoi(argv[++i]);
     else if (a == "--only" && has_value) o.only = argv[++i];
-    else if (a == "--emin-friction" && has_value) o.emin_friction = std::stod(argv[++i]);
     else {
       fmt::print(stderr, "usage: study_four_sands [--quick] [--out DIR] [--grainlab PATH] [--threads N] "
-                         "[--only sands|damping] [--estimate] [--emin-friction F]\n");
+                         "[--only sands|damping] [--estimate]\n");
       return 2;
     }
   }
@@ -310,19 +232,15 @@ int main(int argc, char** argv) {
     for (const Sand& s : kSands) {
       DirectShearSpec spec = base_spec(o, s);
       if (o.only == "damping" && std::string(s.name) != "glass-beads") continue;
-      Stopwatch clock;
-      nlohmann::json j;
-      try {
-        j = prepare_sand(o, s, spec);
-      } catch (const RunError& e) {  // one sand's failure leaves the others to run
-        fmt::print("{}: {}\n", s.name, e.what());
-        study["sands"].push_back({{"name", s.name}, {"error", e.what()}});
-        save(o, study);
-        continue;
-      }
-      j["preparation_wall_s"] = clock.seconds();
-      if (std::string(s.name) == "glass-beads") beads = spec, have_beads = true;
-      if (o.only != "damping") shear_run(o, spec, s.name, j);
+      nlohmann::json j = {{"name", s.name}, {"sand_preset", s.preset}, {"grain_class", spec.grains.preset}};
+      fmt::print("{}: {} grains of {} faces, box {:.2f} x {:.2f} x {:.2f} mm\n", s.name, spec.grains.preset,
+                 spec.grains.faces, spec.box.length * 1e3, spec.box.width * 1e3, spec.box.height * 1e3);
+      // One sand's failure leaves the others to run; the damping set needs
+      // the beads' run (their indices and friction), so it runs with it.
+      if (shear_run(o, spec, s.name, j)) copy_preparation(o, s.name, spec, j);
+      else j["error"] = fmt::format("grainlab run failed (exit status {})", j["run_exit_status"].get<int>());
+      if (std::string(s.name) == "glass-beads" && !j.contains("error") && j.contains("e_min"))
+        beads = spec, have_beads = true;
       study["sands"].push_back(j);
       save(o, study);
     }
@@ -332,7 +250,8 @@ int main(int argc, char** argv) {
         spec.material.law = contact_law<HertzUserLaw>();
         spec.material.grain.gamma_n = gn;
         spec.material.grain.gamma_t = gt;
-        spec.specimen.tolerance = 10;
+        spec.specimen.relative_density_tolerance = 0.99;  // reports the density the beads' friction gives
+        spec.specimen.tolerance = 10;                     // (--quick: on the lab's indices)
         nlohmann::json j = {{"gamma_n", gn}, {"gamma_t", gt}};
         shear_run(o, spec, fmt::format("damping-{:g}-{:g}", gn, gt), j);
         study["damping"].push_back(j);

@@ -63,7 +63,9 @@ class Sand:
         self.rotation = value_at(self.run, "rotation_mean_deg")
         self.cn = value_at(self.run, "coordination_number")
         self.psi_fabric = self.run.peak_psi()
-        self.e = rp.num(rp.get(self.run.info, "preparation", "void_ratio"))
+        # A Dr on the own indices is judged on the bulk void ratio, as the indices are.
+        prep = self.run.info.get("preparation", {})
+        self.e = rp.num(prep.get("bulk_void_ratio") if "own_e_min" in prep else prep.get("void_ratio"))
         self.dr = rp.num(rp.get(self.run.info, "preparation", "relative_density"))
         self.wall = (rp.num(entry.get("preparation_wall_s")) or 0) + (rp.num(entry.get("run_wall_s")) or 0)
 
