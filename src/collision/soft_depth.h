@@ -43,12 +43,11 @@
 // grain and one step's torque kick multiplied an angular grain's energy up to
 // 2e4-fold on landing (tests/lab/faceted_impact_test.cpp). With k = 4 the
 // shallow weights fall as d_i^3: it takes ~30 vertices at 0.3 of the deepest
-// depth, or ~300 at 0.1. And a contact force must pass through both bodies:
-// where the line of action misses either body's bounding sphere, D is in
-// that non-monotone region and the point contact of PD is used instead (as
-// where D < PD or sum g <= 0). Those switches are continuous in the normal
-// direction only where D = PD; elsewhere the potential jumps, which is the
-// price of never applying a torque no contact can make.
+// depth, or ~300 at 0.1. (Also tried: falling back to the point contact of
+// PD wherever the line of action misses either body's bounding sphere. It
+// cut the gains of 10 m/s landings further, but the switch is a jump in the
+// potential, and with it the golden run's consolidation never came to rest;
+// not kept. docs/physics.md has the figures.)
 //
 // Mapping to one contact. The law is evaluated at depth D along n = G/|G| and
 // its elastic force multiplied by gain = |G|; it acts at the point p of the
