@@ -51,6 +51,7 @@ nlohmann::json to_json(const std::vector<PreparationTrial>& trials) {
     nlohmann::json j = {{"deposition_friction", t.friction}, {"void_ratio", t.void_ratio}, {"steps", t.steps},
                         {"wall_s", t.wall_s}};
     if (std::isfinite(t.relative_density)) j["relative_density"] = t.relative_density;
+    if (!t.error.empty()) j["error"] = t.error;
     a.push_back(j);
   }
   return a;

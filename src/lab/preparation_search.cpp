@@ -75,13 +75,28 @@ Preparation prepare_to_target(const DirectShearSpec& spec, const PreparationSear
   } else {
     u = to_u(0.12);
   }
-  std::unique_ptr<DirectShearTest> best;
   double best_miss = std::numeric_limits<double>::infinity();
   std::string why;
+  const TrialPreparation run_trial = o.trial ? o.trial : TrialPreparation(trial_preparation);
+  double best_e = NAN;
   for (int k = 0; k < o.max_trials; ++k) {
     PreparationTrial trial;
-    std::unique_ptr<DirectShearTest> t = trial_preparation(spec, to_mu(u), trial);
+    std::unique_ptr<DirectShearTest> t;
+    Stopwatch clock;
+    try {
+      t = run_trial(spec, to_mu(u), trial);
+    } catch (const RunError& e) {
+      trial = PreparationTrial{to_mu(u), NAN, NAN, 0, clock.seconds(), e.what()};
+    }
     p.trials.push_back(trial);
+    if (!trial.error.empty()) {
+      if (progress)
+        progress(fmt::format("trial {}: deposition friction {:.4f} failed ({:.0f} s): {}", k + 1, trial.friction,
+                             trial.wall_s, trial.error));
+      const double step = 0.1 * (u_hi - u_lo);
+      u = u < 0.5 * (u_lo + u_hi) ? u + step : u - step;
+      continue;
+    }
     if (progress)
       progress(fmt::format("trial {}: deposition friction {:.4f} -> e = {:.4f}{} ({} steps, {:.0f} s)", k + 1,
                            trial.friction, trial.void_ratio,
@@ -93,7 +108,7 @@ Preparation prepare_to_target(const DirectShearSpec& spec, const PreparationSear
       return p;
     }
     const double miss = std::abs(trial.void_ratio - target);
-    if (miss < best_miss) best_miss = miss, best = std::move(t);
+    if (miss < best_miss) best_miss = miss, best_e = trial.void_ratio;
     if (trial.void_ratio < target) u_lo = u, e_lo = trial.void_ratio;
     else u_hi = u, e_hi = trial.void_ratio;
     // The ends: frictionless still too loose, or the loosest still too dense.
@@ -118,16 +133,20 @@ Preparation prepare_to_target(const DirectShearSpec& spec, const PreparationSear
       u = u_lo >= 0.5 * u_max ? u_max : 0.5 * (u_lo + u_max);
     }
   }
+  if (why.empty() && std::isnan(best_e))
+    why = "every trial failed (each trial's error is listed): a phase did not come to rest";
   if (why.empty()) why = fmt::format("{} trials did not land within the tolerance (the packing's scatter at a "
                                      "given friction may be as large as the tolerance)",
                                      p.trials.size());
   std::string list;
-  for (const PreparationTrial& t : p.trials) list += fmt::format(" mu {:.4f} -> e {:.4f};", t.friction, t.void_ratio);
+  for (const PreparationTrial& t : p.trials)
+    list += t.error.empty() ? fmt::format(" mu {:.4f} -> e {:.4f};", t.friction, t.void_ratio)
+                            : fmt::format(" mu {:.4f} failed ({});", t.friction, t.error);
   throw RunError(fmt::format(
-      "specimen preparation could not reach {}: {}. Trials:{} closest e = {:.4f}. To fix: set a reachable "
+      "specimen preparation could not reach {}: {}. Trials:{} closest e = {}. To fix: set a reachable "
       "target (specimen.relative_density or specimen.void_ratio), allow a wider specimen.{}, or make the box "
       "larger (a small box's walls loosen the packing)",
-      goal, why, list, (best ? judged_void_ratio(spec, *best) : 0.0),
+      goal, why, list, std::isnan(best_e) ? std::string("none") : fmt::format("{:.4f}", best_e),
       own ? "relative_density_tolerance" : "tolerance"));
 }
 

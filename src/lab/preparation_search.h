@@ -19,6 +19,10 @@
 // (bulk e), else |e - e_target| <= specimen.tolerance (whole specimen).
 // Stops with RunError (the trials, the closest, why, how to fix) when mu = 0
 // is still too loose, mu_max still too dense, or max_trials are spent.
+// A trial that fails (RunError: a phase that did not come to rest) is a
+// failed trial, not the end: it is listed with its error, counts against
+// max_trials, and the next trial moves a tenth of the bracket towards the
+// bracket's middle (another friction, another packing).
 #pragma once
 
 #include "lab/direct_shear.h"
@@ -40,17 +44,24 @@ namespace grainlab {
 // (550 beads, 8 d_max box) at bulk e_max = 0.715, a random loose packing.
 inline constexpr double kLoosestDepositionFriction = 1.0;
 
-struct PreparationSearchOptions {
-  double max_friction = kLoosestDepositionFriction;  // the loosest end of the search
-  int max_trials = 8;
-};
-
 struct PreparationTrial {
   double friction = 0;          // deposition friction tried
-  double void_ratio = 0;        // the judged void ratio: bulk (own indices) or whole specimen
+  double void_ratio = 0;        // the judged void ratio: bulk (own indices) or whole specimen; NaN if failed
   double relative_density = 0;  // on the target's indices (NaN for a void-ratio target without indices)
   std::int64_t steps = 0;
   double wall_s = 0;            // s of wall-clock time
+  std::string error;            // why the trial failed (a phase that did not come to rest); empty if it did not
+};
+
+// One trial preparation at deposition friction mu: the test after
+// compaction, with `out` filled in; throws RunError if it fails.
+using TrialPreparation =
+    std::function<std::unique_ptr<DirectShearTest>(const DirectShearSpec& spec, double mu, PreparationTrial& out)>;
+
+struct PreparationSearchOptions {
+  double max_friction = kLoosestDepositionFriction;  // the loosest end of the search
+  int max_trials = 8;
+  TrialPreparation trial;  // empty: trial_preparation below (tests put a model of e(mu) here)
 };
 
 struct Preparation {

@@ -10,6 +10,10 @@
 
 #include <cmath>
 #include <cstdio>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
 
 using namespace grainlab;
 
@@ -87,4 +91,70 @@ TEST(PreparationSearch, UnreachableTargetStopsWithWhatItReached) {
     EXPECT_NE(msg.find("To fix"), std::string::npos) << msg;
     EXPECT_NE(msg.find("frictionless"), std::string::npos) << msg;  // why: the densest end was tried
   }
+}
+
+namespace {
+
+// A model of the preparation for the search alone: e grows linearly in
+// u = mu / (mu + 0.1) from 0.78 (frictionless) to 0.86 (friction 1.0), and
+// the trials whose friction lies in `fails` throw as a phase that never came
+// to rest does.
+struct ModelPreparation {
+  std::vector<std::pair<double, double>> fails;  // friction ranges that fail
+  int calls = 0;
+  std::unique_ptr<DirectShearTest> operator()(const DirectShearSpec&, double mu, PreparationTrial& out) {
+    ++calls;
+    for (const auto& [lo, hi] : fails)
+      if (mu >= lo && mu <= hi) throw RunError("the compact phase did not come to rest in 400050 steps");
+    const double u = mu / (mu + 0.1), u_max = 1.0 / 1.1;
+    out.friction = mu;
+    out.void_ratio = 0.78 + 0.08 * u / u_max;
+    out.relative_density = NAN;
+    out.steps = 1000;
+    return nullptr;
+  }
+};
+
+DirectShearSpec void_ratio_target(double e) {
+  DirectShearSpec s;
+  s.specimen.void_ratio = e;
+  s.specimen.tolerance = 0.002;
+  return s;
+}
+
+}  // namespace
+
+TEST(PreparationSearch, AFailedTrialIsListedAndTheSearchGoesOn) {
+  // The first guess (friction 0.12) fails; the search tries another friction
+  // and lands on e = 0.80 +- 0.002 (the model's friction 0.0294).
+  auto model = std::make_shared<ModelPreparation>();
+  model->fails = {{0.119, 0.121}};
+  PreparationSearchOptions o;
+  o.trial = [model](const DirectShearSpec& s, double mu, PreparationTrial& t) { return (*model)(s, mu, t); };
+  const Preparation p = prepare_to_target(void_ratio_target(0.80), o);
+  ASSERT_GE(p.trials.size(), 2u);
+  EXPECT_NEAR(p.trials[0].friction, 0.12, 1e-9);
+  EXPECT_NE(p.trials[0].error.find("did not come to rest"), std::string::npos);
+  EXPECT_TRUE(std::isnan(p.trials[0].void_ratio));
+  EXPECT_TRUE(p.trials.back().error.empty());
+  EXPECT_NEAR(p.trials.back().void_ratio, 0.80, 0.002);
+  EXPECT_NEAR(p.friction, p.trials.back().friction, 0);
+}
+
+TEST(PreparationSearch, EveryTrialFailingStopsWithTheTrialsAndWhy) {
+  auto model = std::make_shared<ModelPreparation>();
+  model->fails = {{0.0, 1.0}};
+  PreparationSearchOptions o;
+  o.max_trials = 4;
+  o.trial = [model](const DirectShearSpec& s, double mu, PreparationTrial& t) { return (*model)(s, mu, t); };
+  try {
+    prepare_to_target(void_ratio_target(0.80), o);
+    FAIL() << "expected RunError";
+  } catch (const RunError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("every trial failed"), std::string::npos) << m;
+    EXPECT_NE(m.find("did not come to rest"), std::string::npos) << m;
+    EXPECT_NE(m.find("closest e = none"), std::string::npos) << m;
+  }
+  EXPECT_EQ(model->calls, 4);
 }
