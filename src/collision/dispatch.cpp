@@ -62,9 +62,9 @@ int collide_shapes(const PosedShape& a, const PosedShape& b, PairCache& cache, S
     throw std::logic_error("no narrowphase routine for shape kinds " + std::to_string(idx(a.kind)) + " and " +
                            std::to_string(idx(b.kind)));
   if (!e.flip) return e.fn(a, b, cache, out);
-  PairCache flipped{-cache.dir, cache.hint_b, cache.hint_a, cache.warm};
+  PairCache flipped{-cache.dir, cache.hint_b, cache.hint_a, cache.warm, cache.simplex.swapped()};
   const int n = e.fn(b, a, flipped, out);
-  cache = {-flipped.dir, flipped.hint_b, flipped.hint_a, flipped.warm};
+  cache = {-flipped.dir, flipped.hint_b, flipped.hint_a, flipped.warm, flipped.simplex.swapped()};
   for (int k = 0; k < n; ++k) out[k].geo.normal = -out[k].geo.normal;
   return n;
 }

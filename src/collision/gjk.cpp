@@ -257,9 +257,10 @@ bool Epa::expand(int closest, int wi) {
 
 // Polytope pairs take the translated-GJK path (penetration.h) when `dir` is
 // warm (last step's normal of this pair) and it concludes; GJK/EPA otherwise.
-ContactResult collide_convex(const PolytopeShape& a, const PolytopeShape& b, Vec3& dir, bool warm) {
+ContactResult collide_convex(const PolytopeShape& a, const PolytopeShape& b, Vec3& dir, bool warm,
+                             SimplexCache* simplex) {
   ContactResult r;
-  if (!(warm && warm_penetration(a, b, dir, r))) r = gjk_epa(a, b, dir);
+  if (!(warm && warm_penetration(a, b, dir, r, simplex))) r = gjk_epa(a, b, dir, nullptr, simplex);
   contact_patch(a, b, r);
   return r;
 }

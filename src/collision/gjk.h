@@ -35,8 +35,11 @@
 #pragma once
 
 #include "collision/contact_result.h"
+#include "collision/simplex_cache.h"
 
+#include <algorithm>
 #include <cmath>
+#include <concepts>
 #include <limits>
 
 namespace grainlab {
@@ -70,6 +73,12 @@ struct SupportPoint {
 
 template <class S>
 concept HasHint = requires(const S& s) { s.hint = Index{0}; };
+// Shapes whose support points are vertices that can be named by index
+// (PolytopeShape): their simplex can be kept between calls (simplex_cache.h).
+template <class S>
+concept HasPoints = HasHint<S> && requires(const S& s, Index i) {
+  { s.point(i) } -> std::convertible_to<Vec3>;
+};
 
 struct Simplex {
   SupportPoint p[4];
@@ -184,9 +193,14 @@ Epa::Result Epa::run(const Support& support, const Seed& seed, const SupportPoin
 
 // Distance (separated) or penetration (overlapping) of two convex support
 // shapes. `dir` seeds the search (the last normal of this pair, or any
-// non-zero vector) and receives the returned normal.
+// non-zero vector) and receives the returned normal. For two shapes with
+// named vertices, `simplex` (if given and not empty) is the simplex the
+// pair's last call ended on: GJK starts from it instead of from the support
+// point along dir, and it receives this call's final simplex (emptied when
+// the shapes overlap).
 template <class ShapeA, class ShapeB>
-ContactResult gjk_epa(const ShapeA& a, const ShapeB& b, Vec3& dir, GjkEpaInfo* info = nullptr) {
+ContactResult gjk_epa(const ShapeA& a, const ShapeB& b, Vec3& dir, GjkEpaInfo* info = nullptr,
+                      SimplexCache* simplex = nullptr) {
   using namespace gjk_detail;
   const auto support = [&](const Vec3& d) {
     SupportPoint p;
@@ -212,6 +226,8 @@ ContactResult gjk_epa(const ShapeA& a, const ShapeB& b, Vec3& dir, GjkEpaInfo* i
     d0 = b.center() - a.center();
     if (!d0.allFinite() || !(d0.squaredNorm() > 1e-300)) d0 = Vec3::UnitX();
   }
+  constexpr bool kNamed = HasPoints<ShapeA> && HasPoints<ShapeB>;
+  if (!kNamed) simplex = nullptr;
   Simplex s;
   s.p[0] = support(d0);
   s.lambda[0] = 1;
@@ -234,6 +250,25 @@ ContactResult gjk_epa(const ShapeA& a, const ShapeB& b, Vec3& dir, GjkEpaInfo* i
   // --- GJK ---
   Vec3 v = s.p[0].w;
   bool overlap = false;
+  if constexpr (kNamed) {
+    // Restart from the kept simplex when it is nearer the origin than the
+    // support point along dir (it nearly always is: the same feature).
+    if (simplex && simplex->n > 0) {
+      Simplex k;
+      for (int i = 0; i < simplex->n && i < 3; ++i) {
+        SupportPoint p;
+        p.ha = simplex->a[i], p.hb = simplex->b[i];
+        p.a = a.point(p.ha), p.b = b.point(p.hb);
+        p.w = p.a - p.b;
+        bool duplicate = false;
+        for (int j = 0; j < k.n; ++j) duplicate |= (k.p[j].w == p.w);
+        if (!duplicate) k.p[k.n++] = p;
+      }
+      Vec3 vk;
+      reduce_simplex(k, vk);
+      if (vk.squaredNorm() < v.squaredNorm()) s = k, v = vk;
+    }
+  }
   for (;;) {
     if (inf.gjk_iterations++ >= kMaxGjkIterations) break;
     const double vv = v.squaredNorm();
@@ -274,6 +309,12 @@ ContactResult gjk_epa(const ShapeA& a, const ShapeB& b, Vec3& dir, GjkEpaInfo* i
     r.normal = -v / dist;
     r.point = 0.5 * (pa + pb);
     dir = r.normal;
+    if constexpr (kNamed) {
+      if (simplex) {
+        simplex->n = std::min(s.n, 3);
+        for (int i = 0; i < simplex->n; ++i) simplex->a[i] = s.p[i].ha, simplex->b[i] = s.p[i].hb;
+      }
+    }
     inf.simplex_size = s.n;
     for (int i = 0; i < s.n; ++i) inf.simplex[i] = s.p[i].w;
     return r;
@@ -281,6 +322,7 @@ ContactResult gjk_epa(const ShapeA& a, const ShapeB& b, Vec3& dir, GjkEpaInfo* i
 
   // --- EPA: complete the simplex to a tetrahedron that holds the origin ---
   inf.used_epa = true;
+  if (simplex) simplex->n = 0;
   SupportPoint t[4];
   int n = s.n;
   for (int i = 0; i < n; ++i) t[i] = s.p[i];

@@ -4,6 +4,7 @@
 
 #include "collision/contact_result.h"
 #include "collision/shapes.h"
+#include "collision/simplex_cache.h"
 
 namespace grainlab {
 
@@ -25,7 +26,9 @@ ContactResult collide(const BoxShape& a, const SphereShape& b);
 // shallow penetration is found by the local translated-GJK iteration
 // (penetration.h), several times cheaper than EPA; cold calls use EPA.
 // A touching polytope pair's contact is then contact_patch's below.
-ContactResult collide_convex(const PolytopeShape& a, const PolytopeShape& b, Vec3& dir, bool warm = false);
+// `simplex` (optional): the pair's kept GJK simplex (simplex_cache.h).
+ContactResult collide_convex(const PolytopeShape& a, const PolytopeShape& b, Vec3& dir, bool warm = false,
+                             SimplexCache* simplex = nullptr);
 ContactResult collide_convex(const SphereShape& a, const PolytopeShape& b, Vec3& dir);
 
 // For touching polytopes A, B with r's normal and penetration depth: replaces

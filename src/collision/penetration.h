@@ -62,14 +62,18 @@ struct ShiftedPolytope {
     hint = shape.hint;
     return p;
   }
+  Vec3 point(Index i) const { return shape.point(i) + t; }
   Vec3 center() const { return shape.center() + t; }
 };
 
 // Penetration of A and polytope B by translated GJK, starting from `dir` (from A
 // to B). Returns false, leaving `out` unset, if A and B do not overlap along
 // dir or the iteration cannot conclude; the caller then runs gjk_epa.
+// `simplex` (optional) carries each GJK's final simplex to the next
+// (simplex_cache.h): one pair's GJKs here and in later steps start there.
 template <class ShapeA>
-bool warm_penetration(const ShapeA& a, const PolytopeShape& b, Vec3& dir, ContactResult& out) {
+bool warm_penetration(const ShapeA& a, const PolytopeShape& b, Vec3& dir, ContactResult& out,
+                      SimplexCache* simplex = nullptr) {
   const double len = dir.norm();
   if (!(len > 0) || !std::isfinite(len)) return false;
   Vec3 n = dir / len;
@@ -94,7 +98,7 @@ bool warm_penetration(const ShapeA& a, const PolytopeShape& b, Vec3& dir, Contac
     const ShiftedPolytope moved{b, t, b.hint};
     Vec3 d = n;
     GjkEpaInfo info;
-    const ContactResult g = gjk_epa(a, moved, d, &info);
+    const ContactResult g = gjk_epa(a, moved, d, &info, simplex);
     if (g.touching) return false;  // rounding: let EPA decide
     const Vec3 n2 = g.normal;
     const double h2 = n2.dot(a.support(n2) - b.support(-n2));

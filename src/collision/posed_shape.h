@@ -9,6 +9,7 @@
 #include "collision/contact_result.h"
 #include "collision/shape_kind.h"
 #include "collision/shapes.h"
+#include "collision/simplex_cache.h"
 #include "core/types.h"
 
 #include <cstdint>
@@ -34,6 +35,7 @@ struct PairCache {
   Vec3 dir = Vec3::UnitX();      // GJK search direction: last normal, a to b
   Index hint_a = 0, hint_b = 0;  // support-vertex hints of the two shapes
   bool warm = false;             // dir and hints come from a previous step
+  SimplexCache simplex;          // polytope pairs: the last GJK simplex (simplex_cache.h)
 };
 
 // A sub-contact of a pair: its geometry and its id within the pair (0 for a

@@ -1,7 +1,8 @@
 // Grain-grain pair routines: exact sphere-sphere; GJK/EPA sphere-polytope;
 // polytope-polytope by the warm translated GJK (or GJK/EPA cold) with the
-// patch centroid (narrowphase.h). The pair cache carries the last normal and
-// the support hints; a polytope pair is warm once it has been collided.
+// patch's soft depth (narrowphase.h). The pair cache carries the last normal,
+// the support hints and, for polytope pairs, the last GJK simplex
+// (simplex_cache.h); a polytope pair is warm once it has been collided.
 #include "collision/narrowphase.h"
 #include "collision/pair_routines.h"
 
@@ -22,7 +23,7 @@ int sphere_polytope(const PosedShape& a, const PosedShape& b, PairCache& c, SubC
 int polytope_polytope(const PosedShape& a, const PosedShape& b, PairCache& c, SubContact* out) {
   PolytopeShape pa{a.hull, *a.rot, a.pos, a.scale, c.hint_a};
   PolytopeShape pb{b.hull, *b.rot, b.pos, b.scale, c.hint_b};
-  out[0] = {collide_convex(pa, pb, c.dir, c.warm), 0};
+  out[0] = {collide_convex(pa, pb, c.dir, c.warm, &c.simplex), 0};
   c.hint_a = pa.hint;
   c.hint_b = pb.hint;
   c.warm = true;

@@ -69,6 +69,7 @@ struct PolytopeShape {
     hint = poly->support_index(rot.transpose() * d, hint);
     return pos + scale * (rot * poly->vertex(hint));
   }
+  Vec3 point(Index i) const { return pos + scale * (rot * poly->vertex(i)); }  // vertex i in the world
   Vec3 center() const { return pos; }
 };
 

@@ -6,7 +6,8 @@
 //            x_at_rebuild, protocol,
 //   bodies   (x, v, w: 3 f64 each; q: x, y, z, w),
 //   walls    (x, q, v, force),
-//   pairs, wall_pairs (a, b i32; cache: dir; hint_a, hint_b i32; warm u8),
+//   pairs, wall_pairs (a, b i32; cache: dir; hint_a, hint_b i32; warm u8;
+//            simplex: n i32, a[3], b[3] i32),
 //   contacts, wall_contacts (a, b, sub i32; xi; geo: touching u8, depth,
 //            normal, point, spread, gain, twist; force, torque, normal_force),
 //   x_at_rebuild (3 f64 each), protocol bytes.
@@ -28,10 +29,10 @@ namespace grainlab {
 
 // A new field in these structs must be written below (and the version bumped).
 static_assert(sizeof(ContactResult) == 104, "ContactResult changed: update io/checkpoint.cpp and kCheckpointVersion");
-static_assert(sizeof(PairCache) == 40, "PairCache changed: update io/checkpoint.cpp and kCheckpointVersion");
+static_assert(sizeof(PairCache) == 64, "PairCache changed: update io/checkpoint.cpp and kCheckpointVersion");
 // CandidatePair::first_contact is a checked hint, not state: it is not written
 // and reads back as kUnknownContacts.
-static_assert(sizeof(CandidatePair) == 56, "CandidatePair changed: update io/checkpoint.cpp and kCheckpointVersion");
+static_assert(sizeof(CandidatePair) == 80, "CandidatePair changed: update io/checkpoint.cpp and kCheckpointVersion");
 static_assert(sizeof(Contact) == 200, "Contact changed: update io/checkpoint.cpp and kCheckpointVersion");
 
 namespace {
@@ -53,6 +54,9 @@ void write_pair(Writer& w, const CandidatePair& p) {
   w.vec(p.cache.dir);
   w.i32(p.cache.hint_a), w.i32(p.cache.hint_b);
   w.u8(p.cache.warm ? 1 : 0);
+  const SimplexCache& s = p.cache.simplex;
+  w.i32(s.n);
+  for (int i = 0; i < 3; ++i) w.i32(s.a[i]), w.i32(s.b[i]);
 }
 
 CandidatePair read_pair(Reader& r) {
@@ -61,6 +65,9 @@ CandidatePair read_pair(Reader& r) {
   p.cache.dir = r.vec();
   p.cache.hint_a = r.i32(), p.cache.hint_b = r.i32();
   p.cache.warm = r.flag();
+  SimplexCache& s = p.cache.simplex;
+  s.n = r.i32();
+  for (int i = 0; i < 3; ++i) s.a[i] = r.i32(), s.b[i] = r.i32();
   return p;
 }
 
@@ -92,7 +99,7 @@ Contact read_contact(Reader& r) {
 
 constexpr std::size_t kBodyBytes = 13 * 8;
 constexpr std::size_t kWallBytes = 13 * 8;
-constexpr std::size_t kPairBytes = 4 * 4 + 1 + 3 * 8;
+constexpr std::size_t kPairBytes = 4 * 4 + 1 + 3 * 8 + 7 * 4;
 constexpr std::size_t kContactBytes = 3 * 4 + 1 + 22 * 8;
 
 }  // namespace

