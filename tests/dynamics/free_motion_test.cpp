@@ -1,4 +1,6 @@
 // Bodies with no contacts: free fall and torque-free rotation.
+#include "core/rng.h"
+#include "dynamics/integrator.h"
 #include "dynamics/world.h"
 #include "geometry/primitives.h"
 
@@ -59,4 +61,29 @@ TEST(FreeMotion, TorqueFreeAsymmetricBodyConservesMomentumAndEnergy) {
   EXPECT_LT(max_energy_error, 1e-3);
   // The flip really happened: the body-frame angular velocity swung far away.
   EXPECT_GT(max_axis_change, 1.0);
+}
+
+TEST(FreeMotion, RotationQuaternionMatchesSinAndCosOnBothSidesOfItsSeries) {
+  // The series (|phi| < 0.1) and sin/cos (above) against the closed form in
+  // long double, from 1e-12 rad to 3 rad.
+  for (double angle = 1e-12; angle < 3; angle *= 1.07) {
+    const Vec3 axis = Vec3(0.3, -0.5, 0.81).normalized();
+    const Quat q = rotation_quaternion(angle * axis);
+    const long double x = 0.5L * angle;
+    const double c = static_cast<double>(std::cos(x)), s = static_cast<double>(std::sin(x));
+    EXPECT_NEAR(q.w(), c, 3e-16) << angle;
+    EXPECT_NEAR(q.vec().dot(axis), s, 4e-16 * s) << angle;
+    EXPECT_NEAR(q.norm(), 1, 3e-16) << angle;
+  }
+}
+
+TEST(FreeMotion, HalfwayIsSlerpAtOneHalf) {
+  Rng rng(4);
+  for (int t = 0; t < 200; ++t) {
+    const Quat q0 = rng.rotation();
+    Quat q1 = rotation_quaternion(rng.uniform(0, 2.5) * rng.unit_vector()) * q0;
+    if (t % 2) q1.coeffs() = -q1.coeffs();  // the same rotation, the other sign
+    const Quat h = halfway(q0, q1), ref = q0.slerp(0.5, q1);
+    EXPECT_LT(std::min((h.coeffs() - ref.coeffs()).norm(), (h.coeffs() + ref.coeffs()).norm()), 1e-15) << t;
+  }
 }
