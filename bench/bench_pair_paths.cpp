@@ -46,21 +46,6 @@ int main(int argc, char** argv) {
   fmt::print("settled bed of {} grains with ~2000-face hulls after {} steps: {:.2f} contacts per grain\n",
              w.model.bodies.size(), settle, 2.0 * w.contact_count() / w.model.bodies.size());
 
-  const auto& rot = w.rotations();
-  const auto posed = [&](Index i) {
-    const BodyModel& m = w.model.bodies[i];
-    const Shape& sh = w.model.shapes[m.shape];
-    PosedShape p;
-    p.kind = sh.kind;
-    p.hull = &sh.hull;
-    p.compound = &sh.compound;
-    p.radius = m.radius;
-    p.rot = &rot[i];
-    p.q = &w.state.bodies[i].q;
-    p.pos = w.state.bodies[i].x;
-    p.scale = m.scale;
-    return p;
-  };
   std::array<long, kPathCount> count{};
   std::array<double, kPathCount> seconds{};
   for (const CandidatePair& pair : w.state.pairs) {
@@ -69,7 +54,7 @@ int main(int argc, char** argv) {
       ++count[kSpheresApart];
       continue;
     }
-    const PosedShape a = posed(pair.a), b = posed(pair.b);
+    const PosedShape a = w.posed_body(pair.a), b = w.posed_body(pair.b);
     SubContact out[kMaxSubContacts];
     PairCache probe = pair.cache;
     const int n = collide_shapes(a, b, probe, out);

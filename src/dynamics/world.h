@@ -88,6 +88,8 @@ class World {
   const std::vector<Vec3>& body_torques() const { return torque_; }
   // World-frame rotation matrices of the bodies, as of the last step.
   const std::vector<Mat3>& rotations() const { return rot_; }
+  // Body i as the narrowphase sees it, as of the last step (for benches).
+  PosedShape posed_body(Index i) const;
 
  private:
   void prepare();
@@ -102,7 +104,6 @@ class World {
   int collide_pair(CandidatePair& pc, SubContact* out) const;
   int collide_wall(CandidatePair& pc, SubContact* out) const;
   void collide_list(std::vector<CandidatePair>& pairs, bool walls, std::vector<Contact>& contacts);
-  PosedShape posed_body(Index i) const;
   PosedShape posed_wall(Index w) const;
 
   std::vector<Controller> controllers_;

@@ -9,28 +9,8 @@ using namespace grainlab;
 
 namespace {
 
-struct Pair {
-  grainlab::testing::TestHull ha, hb;
-  PolytopeShape a, b;
-};
-
-// Two random blob hulls of size ~1 mm near x = 1 cm, B moved so that the
-// support overlap along u is `delta`.
-Pair make_pair(Rng& rng, int nverts, double delta, Vec3& u) {
-  Pair p;
-  const double L = 1e-3;
-  p.ha = grainlab::testing::random_blob_hull(rng, nverts);
-  p.hb = grainlab::testing::random_blob_hull(rng, nverts);
-  p.a = PolytopeShape{&p.ha.poly, rng.rotation().toRotationMatrix(), Vec3(1e-2, 0, 0), L, 0};
-  p.b = PolytopeShape{&p.hb.poly, rng.rotation().toRotationMatrix(), Vec3::Zero(), L, 0};
-  u = rng.unit_vector();
-  const auto overlap = [&](const Vec3& n) {
-    return n.dot(p.a.support(n) - p.b.support(-n));
-  };
-  p.b.pos = p.a.pos;  // then h_C(u) = overlap(u): move B out along u to leave `delta`
-  p.b.pos = p.a.pos + (overlap(u) - delta) * u;
-  return p;
-}
+using grainlab::testing::make_blob_pair;
+using Pair = grainlab::testing::BlobPair;
 
 // Largest signed distance of x outside the placed hull's face planes (<= 0 inside).
 double outside(const grainlab::testing::TestHull& h, const PolytopeShape& s, const Vec3& x) {
@@ -53,7 +33,7 @@ TEST(WarmPenetration, MatchesEpaFromANearbyDirection) {
   for (int t = 0; t < 4000; ++t) {
     const int nverts = t % 2 ? 400 : 40;
     Vec3 u;
-    Pair p = make_pair(rng, nverts, rng.uniform(2e-6, 3e-5), u);  // DEM-size overlaps
+    Pair p = make_blob_pair(rng, nverts, rng.uniform(2e-6, 3e-5), u);  // DEM-size overlaps
     Vec3 dir_epa = u;
     const ContactResult epa = gjk_epa(p.a, p.b, dir_epa);
     if (!epa.touching) continue;
@@ -82,7 +62,7 @@ TEST(WarmPenetration, TracksAnApproachingPairStepByStep) {
   Rng rng(9);
   for (int run = 0; run < 40; ++run) {
     Vec3 u;
-    Pair p = make_pair(rng, 300, -2e-6, u);  // starts 2 um apart
+    Pair p = make_blob_pair(rng, 300, -2e-6, u);  // starts 2 um apart
     Vec3 dir = u;
     const Vec3 step = -1e-7 * u + 2e-8 * rng.unit_vector();
     for (int i = 0; i < 80; ++i) {
@@ -103,7 +83,7 @@ TEST(WarmPenetration, TracksAnApproachingPairStepByStep) {
 TEST(WarmPenetration, RefusesADirectionAlongWhichTheShapesAreApart) {
   Rng rng(3);
   Vec3 u;
-  Pair p = make_pair(rng, 100, 1e-6, u);
+  Pair p = make_blob_pair(rng, 100, 1e-6, u);
   Vec3 dir = -u;  // the wrong way: along -u the hulls do not overlap
   ContactResult r;
   EXPECT_FALSE(warm_penetration(p.a, p.b, dir, r));

@@ -12,23 +12,8 @@ using namespace grainlab;
 
 namespace {
 
-struct Pair {
-  grainlab::testing::TestHull ha, hb;
-  PolytopeShape a, b;
-};
-
-// Two random hulls of size ~1 mm whose support overlap along u is `delta`
-// (negative: apart by about -delta).
-Pair make_pair(Rng& rng, int nverts, double delta, Vec3& u) {
-  Pair p;
-  p.ha = grainlab::testing::random_blob_hull(rng, nverts);
-  p.hb = grainlab::testing::random_blob_hull(rng, nverts);
-  p.a = PolytopeShape{&p.ha.poly, rng.rotation().toRotationMatrix(), Vec3(1e-2, 0, 0), 1e-3, 0};
-  p.b = PolytopeShape{&p.hb.poly, rng.rotation().toRotationMatrix(), p.a.pos, 1e-3, 0};
-  u = rng.unit_vector();
-  p.b.pos = p.a.pos + (u.dot(p.a.support(u) - p.b.support(-u)) - delta) * u;
-  return p;
-}
+using grainlab::testing::make_blob_pair;
+using Pair = grainlab::testing::BlobPair;
 
 // A small rotation about a random axis.
 Mat3 turn(Rng& rng, double angle) {
@@ -43,7 +28,7 @@ TEST(SimplexCache, GjkFromTheKeptSimplexGivesColdGjksDistanceInFewerIterations) 
   int separated = 0;
   for (int run = 0; run < 30; ++run) {
     Vec3 u;
-    Pair p = make_pair(rng, run % 2 ? 600 : 60, -rng.uniform(1e-7, 2e-5), u);
+    Pair p = make_blob_pair(rng, run % 2 ? 600 : 60, -rng.uniform(1e-7, 2e-5), u);
     const Vec3 drift = 1e-8 * rng.unit_vector();
     const Mat3 spin = turn(rng, 2e-4);
     Vec3 dir_kept = u;
@@ -82,7 +67,7 @@ TEST(SimplexCache, WarmPenetrationFromTheKeptSimplexMatchesEpaStepByStep) {
   int touching = 0, warm = 0;
   for (int run = 0; run < 40; ++run) {
     Vec3 u;
-    Pair p = make_pair(rng, 300, -2e-6, u);
+    Pair p = make_blob_pair(rng, 300, -2e-6, u);
     Vec3 n = u;
     const ContactResult start = gjk_epa(p.a, p.b, n);
     p.b.pos += (start.depth + 2e-6) * n;  // 2 um apart along the closest direction n
@@ -122,7 +107,7 @@ TEST(SimplexCache, AnyKeptIndicesGiveTheRightDistance) {
   Rng rng(8);
   for (int t = 0; t < 500; ++t) {
     Vec3 u;
-    Pair p = make_pair(rng, 200, rng.uniform(-3e-5, 3e-5), u);
+    Pair p = make_blob_pair(rng, 200, rng.uniform(-3e-5, 3e-5), u);
     SimplexCache junk;
     junk.n = 1 + t % 3;
     for (int i = 0; i < 3; ++i)

@@ -200,4 +200,25 @@ inline double support_value(const std::vector<Vec3>& pts, const Vec3& d) {
   return best;
 }
 
+// Two random blob hulls of size ~1 mm near x = 1 cm, B moved so that the
+// support overlap along the random unit u is `delta` (negative: apart by at
+// least -delta). The shapes point into `ha`, `hb`: keep the pair in place.
+struct BlobPair {
+  TestHull ha, hb;
+  PolytopeShape a, b;
+};
+inline BlobPair make_blob_pair(Rng& rng, int nverts, double delta, Vec3& u) {
+  BlobPair p;
+  const double L = 1e-3;
+  p.ha = random_blob_hull(rng, nverts);
+  p.hb = random_blob_hull(rng, nverts);
+  p.a = PolytopeShape{&p.ha.poly, rng.rotation().toRotationMatrix(), Vec3(1e-2, 0, 0), L, 0};
+  p.b = PolytopeShape{&p.hb.poly, rng.rotation().toRotationMatrix(), Vec3::Zero(), L, 0};
+  u = rng.unit_vector();
+  const auto overlap = [&](const Vec3& n) { return n.dot(p.a.support(n) - p.b.support(-n)); };
+  p.b.pos = p.a.pos;  // then h_C(u) = overlap(u): move B out along u to leave `delta`
+  p.b.pos = p.a.pos + (overlap(u) - delta) * u;
+  return p;
+}
+
 }  // namespace grainlab::testing
