@@ -102,23 +102,78 @@ TEST(SimplexCache, WarmPenetrationFromTheKeptSimplexMatchesEpaStepByStep) {
 }
 
 TEST(SimplexCache, AnyKeptIndicesGiveTheRightDistance) {
-  // Indices from another pose (or nonsense ones) only slow GJK down: every
-  // A[i] - B[j] is a point of A - B.
+  // Indices kept at another pose (B moved by up to 50 um and turned by
+  // 0.05 rad: its closest feature has changed) or drawn at random only slow
+  // GJK down: every A[i] - B[j] is a point of A - B. The other pose's
+  // indices lie near the origin, so GJK does start from them.
   Rng rng(8);
+  int separated = 0;
   for (int t = 0; t < 500; ++t) {
     Vec3 u;
     Pair p = make_blob_pair(rng, 200, rng.uniform(-3e-5, 3e-5), u);
-    SimplexCache junk;
-    junk.n = 1 + t % 3;
-    for (int i = 0; i < 3; ++i)
-      junk.a[i] = static_cast<Index>(rng.uniform() * p.ha.poly.size()),
-      junk.b[i] = static_cast<Index>(rng.uniform() * p.hb.poly.size());
+    SimplexCache kept;
+    if (t % 4 == 0) {
+      kept.n = 1 + t % 3;
+      for (int i = 0; i < 3; ++i)
+        kept.a[i] = static_cast<Index>(rng.uniform() * p.ha.poly.size()),
+        kept.b[i] = static_cast<Index>(rng.uniform() * p.hb.poly.size());
+    } else {
+      PolytopeShape elsewhere = p.b;
+      elsewhere.pos += 5e-5 * rng.uniform() * rng.unit_vector() + 5e-5 * u;  // apart, so a simplex is kept
+      elsewhere.rot = turn(rng, 0.05) * elsewhere.rot;
+      Vec3 d = u;
+      gjk_epa(p.a, elsewhere, d, nullptr, &kept);
+    }
     Vec3 d1 = u, d2 = u;
     const ContactResult cold = gjk_epa(p.a, p.b, d1);
-    const ContactResult r = gjk_epa(p.a, p.b, d2, nullptr, &junk);
+    const ContactResult r = gjk_epa(p.a, p.b, d2, nullptr, &kept);
     ASSERT_EQ(r.touching, cold.touching) << t;
-    EXPECT_NEAR(r.depth, cold.depth, 1e-14) << t;
+    // GJK stops within 2e-15 m of the gap; EPA within 1e-10 of the size.
+    EXPECT_NEAR(r.depth, cold.depth, cold.touching ? 1e-12 : 1e-14) << t;
+    separated += !cold.touching;
   }
+  EXPECT_GT(separated, 100);
+}
+
+TEST(SimplexCache, KeptFaceAnswersOnlyWhileItsPlaneStillSupportsTheShapes) {
+  // A touching pair's kept triangle, then B turned by up to 0.05 rad: the
+  // shortcut may answer only if the triangle still lies on the supporting
+  // plane along its normal (its depth is then the triangle's own offset);
+  // otherwise it must leave the pair to GJK.
+  Rng rng(12);
+  int answered = 0, refused = 0, agree = 0;
+  for (int t = 0; t < 1500; ++t) {
+    Vec3 u;
+    Pair p = make_blob_pair(rng, 300, rng.uniform(2e-6, 2e-5), u);
+    Vec3 dir = u;
+    const ContactResult epa0 = gjk_epa(p.a, p.b, dir);
+    if (!epa0.touching) continue;
+    SimplexCache kept;
+    ContactResult first;
+    if (!warm_penetration(p.a, p.b, dir, first, &kept) || kept.n != 3) continue;
+    p.b.rot = turn(rng, rng.uniform(0, 0.05)) * p.b.rot;
+    ContactResult r;
+    Vec3 d = dir;
+    if (!penetration_detail::kept_face(p.a, p.b, kept, d, r)) {
+      ++refused;
+      continue;
+    }
+    ++answered;
+    const double offset = r.normal.dot(p.a.point(kept.a[0]) - p.b.point(kept.b[0]));
+    EXPECT_NEAR(r.depth, offset, 1e-15) << t;
+    const std::vector<Vec3> va = grainlab::testing::world_vertices(p.a), vb = grainlab::testing::world_vertices(p.b);
+    const double brute = grainlab::testing::support_value(va, r.normal) + grainlab::testing::support_value(vb, -r.normal);
+    EXPECT_NEAR(r.depth, brute, 1e-15) << t;
+    // A local fixed point, as warm_penetration's (see penetration.h): never
+    // shallower than EPA's global one, nearly always the same.
+    Vec3 d_epa = d;
+    const double pd = gjk_epa(p.a, p.b, d_epa).depth;
+    EXPECT_GT(r.depth, pd - 1e-12) << t;
+    agree += std::abs(r.depth - pd) < 1e-12;
+  }
+  EXPECT_GT(answered, 50);
+  EXPECT_GT(refused, 50);
+  EXPECT_GT(agree, 0.95 * answered) << agree << " agree, " << answered << " answered, " << refused << " refused";
 }
 
 TEST(SimplexCache, SwappedNamesTheSamePointsForTheReversedPair) {

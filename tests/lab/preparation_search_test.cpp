@@ -115,6 +115,13 @@ struct ModelPreparation {
   }
 };
 
+// Search options whose trials are `model`'s.
+PreparationSearchOptions trials_of(const std::shared_ptr<ModelPreparation>& model) {
+  PreparationSearchOptions o;
+  o.trial = [model](const DirectShearSpec& s, double mu, PreparationTrial& t) { return (*model)(s, mu, t); };
+  return o;
+}
+
 DirectShearSpec void_ratio_target(double e) {
   DirectShearSpec s;
   s.specimen.void_ratio = e;
@@ -129,9 +136,7 @@ TEST(PreparationSearch, AFailedTrialIsListedAndTheSearchGoesOn) {
   // and lands on e = 0.80 +- 0.002 (the model's friction 0.0294).
   auto model = std::make_shared<ModelPreparation>();
   model->fails = {{0.119, 0.121}};
-  PreparationSearchOptions o;
-  o.trial = [model](const DirectShearSpec& s, double mu, PreparationTrial& t) { return (*model)(s, mu, t); };
-  const Preparation p = prepare_to_target(void_ratio_target(0.80), o);
+  const Preparation p = prepare_to_target(void_ratio_target(0.80), trials_of(model));
   ASSERT_GE(p.trials.size(), 2u);
   EXPECT_NEAR(p.trials[0].friction, 0.12, 1e-9);
   EXPECT_NE(p.trials[0].error.find("did not come to rest"), std::string::npos);
@@ -144,9 +149,8 @@ TEST(PreparationSearch, AFailedTrialIsListedAndTheSearchGoesOn) {
 TEST(PreparationSearch, EveryTrialFailingStopsWithTheTrialsAndWhy) {
   auto model = std::make_shared<ModelPreparation>();
   model->fails = {{0.0, 1.0}};
-  PreparationSearchOptions o;
+  PreparationSearchOptions o = trials_of(model);
   o.max_trials = 4;
-  o.trial = [model](const DirectShearSpec& s, double mu, PreparationTrial& t) { return (*model)(s, mu, t); };
   try {
     prepare_to_target(void_ratio_target(0.80), o);
     FAIL() << "expected RunError";
