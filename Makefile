@@ -25,6 +25,7 @@ demo: build
 bench: build
 	$(BUILD)/bench_scenes
 	$(BUILD)/bench_pair_paths
+	$(BUILD)/bench_contact_energy
 	$(BUILD)/bench_sphere_lab
 	$(BUILD)/bench_shear_presets
 
