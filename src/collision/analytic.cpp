@@ -35,9 +35,10 @@ ContactResult collide(const PlaneShape& a, const SphereShape& b) {
 // it over the vertices below the plane. That set is connected in the edge graph
 // (from any vertex below the plane a height-decreasing edge path reaches the
 // deepest vertex), so the walk finds all of them while visiting only them and
-// their neighbours. Each vertex below the plane enters the soft depth
-// (soft_depth.h) with its depth, pushed along the plane normal: the force is
-// the exact gradient of u(D), so a face rocking on the plane gains no energy.
+// their neighbours. The part below the plane of each edge at those vertices
+// enters the soft depth (soft_depth.h) with its depth, pushed along the plane
+// normal: the force is the exact gradient of u(D), so a face rocking on the
+// plane gains no energy.
 ContactResult collide(const PlaneShape& a, const PolytopeShape& b) {
   ContactResult r;
   r.normal = a.normal;
@@ -68,21 +69,25 @@ ContactResult collide(const PlaneShape& a, const PolytopeShape& b) {
   queue.push_back(deepest);
   stamp[deepest] = generation;
   SoftDepth soft(b.pos);
+  const auto depth_of = [&](Index v) { return -(h0 + poly.vertex(v).dot(nl)); };
   for (std::size_t q = 0; q < queue.size(); ++q) {
     const Index v = queue[q];
-    const double d = -(h0 + poly.vertex(v).dot(nl));  // depth of v below the plane
+    const double d = depth_of(v);
     const Vec3 x = b.pos + b.scale * (b.rot * poly.vertex(v));
-    soft.add(x, d, a.normal, x + 0.5 * d * a.normal);
     for (const Index* it = poly.neighbours_begin(v); it != poly.neighbours_end(v); ++it) {
+      const double dw = depth_of(*it);
+      // Each edge once: from v, unless w is below the plane too and has the smaller index.
+      if (poly.is_edge(it) && !(dw > 0 && *it < v))
+        soft.add_linear_piece(x, b.pos + b.scale * (b.rot * poly.vertex(*it)), d, dw, a.normal, a.normal);
       if (stamp[*it] == generation) continue;
       stamp[*it] = generation;
-      if (h0 + poly.vertex(*it).dot(nl) < 0) queue.push_back(*it);
+      if (dw > 0) queue.push_back(*it);
     }
   }
-  if (soft.finish(r, r.depth, a.normal))
+  if (soft.finish(r, a.normal))
     r.normal = a.normal;  // every vertex is pushed along it: G is parallel to it up to rounding
   else
-    r.point = pdeep - 0.5 * hmin * a.normal;  // PD at the deepest vertex
+    r.point = pdeep - 0.5 * hmin * a.normal;  // no edge below (a degenerate hull): the deepest vertex
   return r;
 }
 

@@ -42,6 +42,18 @@ ConvexPolytope::ConvexPolytope(std::vector<Vec3> vertices,
     bounding_radius_ = std::max(bounding_radius_, v.norm());
   }
   build_planes();
+  // An adjacency entry is an edge if its two vertices share two face planes
+  // (all are, where no planes were found).
+  is_edge_.assign(adjacency_.size(), 1);
+  if (!planes_.empty())
+    for (std::size_t v = 0; v < n; ++v)
+      for (Index i = offsets_[v]; i < offsets_[v + 1]; ++i) {
+        int shared = 0;
+        for (Index p = plane_offsets_[v]; p < plane_offsets_[v + 1]; ++p)
+          for (Index q = plane_offsets_[adjacency_[i]]; q < plane_offsets_[adjacency_[i] + 1]; ++q)
+            shared += vertex_planes_[p] == vertex_planes_[q];
+        is_edge_[i] = shared >= 2;
+      }
 }
 
 // A plane through vertex u and two of its neighbours v, w is a face plane if

@@ -1,19 +1,20 @@
 // The contact of two touching polytopes (see narrowphase.h): the soft depth
-// of soft_depth.h over the vertices of each body lying inside the other.
+// of soft_depth.h over the parts of each body's edges lying inside the other.
 //
-// A vertex x of A is inside B iff it is below every face plane of B; its
+// A point x of A is inside B iff it is below every face plane of B; its
 // depth is its distance inside B's nearest face plane (for a point inside a
 // convex body, the distance to its boundary), a continuous function of the
-// two poses, zero when x enters. Only faces near the contact are tried: the
+// two poses, zero where x enters. Only faces near the contact are tried: the
 // faces through B's vertices below A's supporting plane (along the point
 // contact's normal n). B above that plane lies in a half space that A's
 // points do not enter, and B's part below it is bounded by exactly those
-// faces, so a vertex of A is inside B iff it is below them all.
+// faces, so a point of A is inside B iff it is below them all. Only edges
+// that can reach into B are tried: those at A's vertices above B's
+// supporting plane (an edge with a point inside B has an end there).
 //
-// GJK/EPA (or the warm translated GJK) still gives the normal, the
-// penetration depth PD and the candidates; the pair's potential is
-// u(max(PD, D)): where no vertex is inside (edge across edge), PD at the
-// witness points.
+// GJK/EPA (or the warm translated GJK) still tells whether the pair touches
+// and gives the normal the force is checked against; the potential is u(D)
+// alone.
 #include "collision/narrowphase.h"
 #include "collision/soft_depth.h"
 
@@ -75,28 +76,75 @@ void gather_planes(const ConvexPolytope& poly, const std::vector<Index>& verts, 
       if (w.mark(*it)) out.push_back(*it);
 }
 
-// Adds the vertices `verts` of `s` lying inside `o` to the soft depth: depth =
-// distance inside o's nearest face plane among `o_planes`, pushed out along
-// that plane's normal; `sign` is +1 if s is B (the push on B), -1 if s is A
-// (the reaction on B).
-void add_side(const PolytopeShape& s, const std::vector<Index>& verts, const PolytopeShape& o,
-              const std::vector<Index>& o_planes, double sign, SoftDepth& soft) {
+// Adds the parts of the edges of `s` at the vertices `verts` that lie inside
+// `o` to the soft depth: along an edge x(t) = p + t (q - p), t in [0, 1], the
+// depth inside o is the lower envelope of the plane distances
+// l_k(t) = c_k - m_k . x(t) over `o_planes` (o's faces that can bound the
+// overlap), piecewise linear; each piece enters the soft depth
+// (add_linear_piece) pushed out along its plane's normal. `sign` is +1 if
+// s is B (the push on B), -1 if s is A (the reaction on B). `member` marks
+// `verts` (so an edge between two of them is taken once).
+void add_edges(const PolytopeShape& s, const std::vector<Index>& verts, const PolytopeShape& o,
+               const std::vector<Index>& o_planes, double sign, Walk& member, SoftDepth& soft) {
   const ConvexPolytope& poly = *s.poly;
   const auto& planes = o.poly->planes();
   const Mat3 to_o = o.rot.transpose() * s.rot * (s.scale / o.scale);  // local s -> local o
   const Vec3 off = o.rot.transpose() * (s.pos - o.pos) / o.scale;
+  const std::size_t np = o_planes.size();
+  thread_local std::vector<double> dp, dq;
+  dp.resize(np), dq.resize(np);
+  member.begin(poly.size());
+  for (const Index v : verts) member.mark(v);
   for (const Index v : verts) {
-    const Vec3& pv = poly.vertex(v);
-    const Vec3 xl = to_o * pv + off;
-    double d = std::numeric_limits<double>::infinity();
-    Index best = 0;
-    for (const Index k : o_planes) {
-      const double dk = planes[k].c - planes[k].m.dot(xl);
-      if (dk < d) d = dk, best = k;
-    }
-    if (d > 0 && d < std::numeric_limits<double>::infinity()) {
-      const Vec3 x = s.pos + s.scale * (s.rot * pv), m = o.rot * planes[best].m;
-      soft.add(x, d * o.scale, sign * m, x);
+    const Vec3 pl = to_o * poly.vertex(v) + off;
+    bool p_known = false;
+    for (const Index* it = poly.neighbours_begin(v); it != poly.neighbours_end(v); ++it) {
+      const Index w = *it;
+      if (member.stamp[w] == member.generation && w < v) continue;  // taken from w's side
+      if (!poly.is_edge(it)) continue;
+      const Vec3 ql = to_o * poly.vertex(w) + off;
+      if (!p_known) {
+        for (std::size_t k = 0; k < np; ++k) dp[k] = planes[o_planes[k]].c - planes[o_planes[k]].m.dot(pl);
+        p_known = true;
+      }
+      // The edge is outside o if one plane has both ends outside.
+      bool outside = false;
+      for (std::size_t k = 0; k < np && !outside; ++k) {
+        dq[k] = planes[o_planes[k]].c - planes[o_planes[k]].m.dot(ql);
+        outside = dp[k] <= 0 && dq[k] <= 0;
+      }
+      if (outside || np == 0) continue;
+      // Lower envelope: from t = 0, the lowest line there (ties: the one
+      // falling fastest), up to the first line crossing below it, which
+      // continues it (ties: again the one falling fastest), and so on.
+      std::size_t cur = 0;
+      for (std::size_t k = 1; k < np; ++k)
+        if (dp[k] < dp[cur] || (dp[k] == dp[cur] && dq[k] - dp[k] < dq[cur] - dp[cur])) cur = k;
+      const Vec3 p = s.pos + s.scale * (s.rot * poly.vertex(v));
+      const Vec3 e = s.scale * (s.rot * (poly.vertex(w) - poly.vertex(v)));
+      double t0 = 0;
+      while (t0 < 1) {
+        const double slope = dq[cur] - dp[cur];
+        double t1 = 1;
+        std::size_t next = cur;
+        for (std::size_t k = 0; k < np; ++k) {
+          const double sk = dq[k] - dp[k];
+          if (!(sk < slope)) continue;
+          const double tc = (dp[k] - dp[cur]) / (slope - sk);  // where line k meets the current one
+          if (!(tc > t0)) continue;
+          // The earliest crossing; of crossings equally early within rounding
+          // the line falling fastest. Slopes fall at every switch: at most np.
+          const bool earlier = tc < t1 - 1e-12;
+          const bool tied = !earlier && tc <= t1 + 1e-12 && next != cur && sk < dq[next] - dp[next];
+          if (earlier || tied) t1 = std::min(t1, tc), next = k;
+        }
+        const Vec3 out = o.rot * planes[o_planes[cur]].m;
+        soft.add_linear_piece(p + t0 * e, p + t1 * e, (dp[cur] + slope * t0) * o.scale,
+                              (dp[cur] + slope * t1) * o.scale, sign * out, out);
+        if (next == cur) break;
+        cur = next;
+        t0 = t1;
+      }
     }
   }
 }
@@ -126,11 +174,12 @@ void contact_patch(const PolytopeShape& a, const PolytopeShape& b, ContactResult
   gather_planes(pb, vb, walk, qb);
 
   SoftDepth soft(b.pos);
-  add_side(a, va, b, qb, -1.0, soft);
-  add_side(b, vb, a, qa, 1.0, soft);
-  // No vertex inside the other (edge across edge), or D below PD: the point
-  // contact of the penetration depth stays.
-  soft.finish(r, r.depth, n);
+  thread_local Walk member;
+  add_edges(a, va, b, qb, -1.0, member, soft);
+  add_edges(b, vb, a, qa, 1.0, member, soft);
+  // Nothing inside (an overlap too thin to resolve) or a force against the
+  // normal (soft_depth.h): the point contact of the penetration depth stays.
+  soft.finish(r, n);
 }
 
 }  // namespace grainlab

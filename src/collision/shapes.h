@@ -42,6 +42,10 @@ class ConvexPolytope {
   const std::vector<Plane>& planes() const { return planes_; }
   const Index* planes_begin(Index v) const { return vertex_planes_.data() + plane_offsets_[v]; }
   const Index* planes_end(Index v) const { return vertex_planes_.data() + plane_offsets_[v + 1]; }
+  // Whether the neighbour entry `it` (from neighbours_begin(v)..end(v)) is an
+  // edge of the polytope: v and it share two face planes. False for the
+  // diagonal of a face whose coplanar triangles merged into one plane.
+  bool is_edge(const Index* it) const { return is_edge_[static_cast<std::size_t>(it - adjacency_.data())] != 0; }
 
  private:
   void build_planes();
@@ -53,6 +57,7 @@ class ConvexPolytope {
   std::vector<Plane> planes_;
   std::vector<Index> plane_offsets_;
   std::vector<Index> vertex_planes_;
+  std::vector<unsigned char> is_edge_;  // per adjacency entry
 };
 
 // A ConvexPolytope placed in the world: p_world = pos + rot * (scale * p_local).

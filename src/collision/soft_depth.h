@@ -1,5 +1,5 @@
 // The conservative contact of faceted shapes: one potential per pair, a
-// function of the depths of the vertices lying inside the other shape.
+// function of the depths of the points of its edges lying inside the other shape.
 //
 // Why. A force f(PD) n at the penetration-depth witness point is the exact
 // gradient of u(PD) (envelope theorem), but PD of a flat face on a plane is
@@ -10,49 +10,69 @@
 // is not a gradient, and a rocking face gains energy every cycle
 // (tests/dynamics/resting_contact_test.cpp measures both).
 //
-// The potential. Vertex i of either shape lying inside the other has depth
-// d_i > 0 (its distance inside the other's nearest face plane, or below a
-// wall), a continuous, piecewise smooth function of the two poses that is 0
-// when the vertex enters. The pair's potential is U = u(D), u the contact
-// law's elastic energy, with the smooth maximum
-//     D = kappa S_{k+1} / S_k,   S_j = sum_i d_i^j,   k = 4,   kappa = (k+2)/(k+1) = 6/5.
-// D is continuous (a vertex enters with weight 0), smooth where the d_i are,
-// and lies between kappa times the mean and kappa times the max depth.
-// kappa makes a finely tessellated sphere follow the law exactly: with
-// vertices evenly spread over a cap of depth delta, d = delta - rho^2/(2R),
-// S_j = 2 pi R n delta^{j+1}/(j+1), so D = kappa (k+1)/(k+2) delta = delta.
+// The measure: the edges inside the other shape (session 8; vertices
+// before). A point x of an edge of either shape lying inside the other has
+// depth d(x) > 0, its distance inside the other's nearest face plane (or below
+// a wall): along an edge the lower envelope of the face planes' distances,
+// piecewise linear, 0 where the edge enters. The pair's potential is U = u(D),
+// u the contact law's elastic energy, with the smooth maximum
+//     D = kappa S_{k+1} / S_k,   S_j = sum over edges of the integral of d^j ds,
+//     k = 4,   kappa = (k+2)/(k+1) = 6/5.
+// Every overlap of two convex polytopes has an edge of one inside the other
+// (a vertex of A n B is a vertex of A or B, or where an edge of one crosses a
+// face of the other), so D > 0 whenever they overlap, and no other depth (no
+// penetration depth PD) enters the potential. D is continuous and C1 in the
+// poses: an integral of a continuous, piecewise linear depth whose pieces
+// meet where their integrands agree and end where the depth is 0. Why not
+// vertices alone, as before: two edges crossing have no vertex inside, so
+// such a contact needed PD, and u(max(PD, D)) kinked where D = PD. PD itself
+// has V-shaped kinks as the pair moves (the deepest feature switches): the
+// energy audit bench_contact_energy measured a frictionless 40-face bed,
+// run undamped, gaining 1.0e-6 J per 1000 steps (5 % of its elastic energy),
+// four fifths through the PD contacts; with the edge measure -2e-10, like a
+// bed of spheres (3e-9).
+// kappa makes a finely tessellated sphere follow the law: with edges evenly
+// spread over a cap of depth delta (equal length per area), d = delta -
+// rho^2/(2R), S_j = c 2 pi R delta^{j+1}/(j+1), so D = kappa (k+1)/(k+2)
+// delta = delta. Its edges are chords, inside the sphere by up to s^2/(8R)
+// for edge length s: against the volume-equivalent sphere (the engine's
+// Hertz radius) that sag is what makes the tessellation converge.
+// A corner pressed into a face: D = kappa (k+1)/(k+2) d = d, its depth. A
+// flat face of equally deep edges: D = kappa delta, |G| = kappa (below): the
+// face is kappa^{5/2} = 1.58 times stiffer than one Hertz point.
+// The integral along a straight piece where one plane is nearest is exact by
+// 4-point Gauss-Legendre (add_linear_piece): each node a point of weight
+// length * w_g with its depth, as a vertex was.
 //
-// The forces (exact gradient). dD/dd_i = kappa d_i^{k-1} ((k+1) d_i S_k -
-// k S_{k+1}) / S_k^2 = g_i. Vertex i carries u'(D) g_i along u_i, the outward
-// normal of the other shape's face that is nearest (pushing the vertex out),
+// The forces (exact gradient). For the points i (Gauss nodes, weight w_i),
+// dD/dd_i = w_i kappa d_i^{k-1} ((k+1) d_i S_k - k S_{k+1}) / S_k^2 = g_i.
+// Point i carries u'(D) g_i along u_i, the outward
+// normal of the other shape's face that is nearest (pushing the point out),
 // so with the unit vectors u_i written as the push on shape B (the reaction
-// where the vertex belongs to A) the pair's elastic wrench on B is u'(D) times
+// where the point belongs to A) the pair's elastic wrench on B is u'(D) times
 //     G = sum g_i u_i,   T = sum g_i (x_i - c_B) x u_i   (about B's centre).
-// For the sphere cap sum g_i = kappa ((k+1) S_k^2 - k S_{k-1} S_{k+1})/S_k^2
-// = 1: |G| = 1 and the force is the law's, f(delta). For a flat face of N
-// equally deep corners D = kappa delta and |G| = kappa: the face is
-// kappa^{5/2} = 1.58 times stiffer than one Hertz point at the same depth.
+// (The depth's changes at the pieces' ends add nothing: there the integrand
+// is continuous or zero.) For the sphere cap sum g_i = kappa ((k+1) S_k^2 -
+// k S_{k-1} S_{k+1})/S_k^2 = 1: |G| = 1 and the force is the law's, f(delta).
 //
 // Why k = 4 (it was 2, kappa 4/3, until session 6). Any smooth maximum that
-// ignores how many vertices there are must give shallow vertices a negative
-// weight (adding a shallow vertex lowers a mean). Pressing the whole patch
-// deeper by h changes D by h sum g_i, and one deep vertex among many shallow
+// ignores how much is inside must give shallow points a negative
+// weight (adding a shallow point lowers a mean). Pressing the whole patch
+// deeper by h changes D by h sum g_i, and one deep point among many shallow
 // ones makes that sum vanish: with k = 2 already 7 vertices at a tenth of the
-// deepest one's depth do (3 S2^2 = 2 S1 S3). The force then tends to zero
+// deepest one's depth did (3 S2^2 = 2 S1 S3). The force then tends to zero
 // while its torque does not: the line of action runs millimetres outside the
 // grain and one step's torque kick multiplied an angular grain's energy up to
 // 2e4-fold on landing (tests/lab/faceted_impact_test.cpp). With k = 4 the
-// shallow weights fall as d_i^3: it takes ~30 vertices at 0.3 of the deepest
-// depth, or ~300 at 0.1. (Also tried: falling back to the point contact of
-// PD wherever the line of action misses either body's bounding sphere. It
-// cut the gains of 10 m/s landings further, but the switch is a jump in the
-// potential, and with it the golden run's consolidation never came to rest;
-// not kept. docs/physics.md has the figures.)
+// shallow weights fall as d_i^3. (Also tried: falling back to the point
+// contact of PD wherever the line of action misses either body's bounding
+// sphere. The switch is a jump in the potential, and with it the golden
+// run's consolidation never came to rest; not kept. docs/physics.md has the
+// figures.)
 //
 // Mapping to one contact. The law is evaluated at depth D along n = G/|G| and
 // its elastic force multiplied by gain = |G|; it acts at the point p of the
-// wrench's line of action nearest the d^k-weighted centroid of the points
-// halfway between each vertex and the other's surface,
+// wrench's line of action nearest the d^k-weighted centroid of the points,
 // and the part of T along n (zero for a face on a plane) is returned as
 // `twist`, a torque per unit u'(D). Damping and friction act at p.
 #pragma once
@@ -76,36 +96,63 @@ class SoftDepth {
   // Torques about c_b, B's centre (m).
   explicit SoftDepth(const Vec3& c_b) : c_(c_b) {}
 
-  // A vertex at x (m) lying d > 0 (m) inside the other shape; u (unit) is the
-  // push on B: A's outward face normal for a vertex of B, minus B's outward
-  // face normal for a vertex of A (the reaction of the push on A); `mid` is
-  // the point halfway between the vertex and the other's surface (m).
-  void add(const Vec3& x, double d, const Vec3& u, const Vec3& mid) {
+  // A point at x (m) lying d > 0 (m) inside the other shape, standing for
+  // `weight` (m of edge, or 1 for a lone point); u (unit) is the push on B: A's
+  // outward face normal for a point of B, minus B's outward face normal for a
+  // point of A (the reaction of the push on A); `mid` is the point the
+  // centroid uses (m).
+  void add(const Vec3& x, double d, const Vec3& u, const Vec3& mid, double weight = 1) {
     const Vec3 s = x - c_;
-    double dk1 = 1;  // d^{k-1}
+    double dk1 = weight;  // weight d^{k-1}
     for (int j = 1; j < kPower; ++j) dk1 *= d;
     const double dk = dk1 * d, dk2 = dk * d;
-    s1_ += d, sk_ += dk, sk1_ += dk2;
+    s1_ += weight * d, sk_ += dk, sk1_ += dk2;
     const Vec3 m = s.cross(u);
     uk1_ += dk1 * u, uk_ += dk * u;
     mk1_ += dk1 * m, mk_ += dk * m;
-    x1_ += d * s, xk_ += dk * (mid - c_);
-    cov_ += d * (s * s.transpose());
+    x1_ += (weight * d) * s, xk_ += dk * (mid - c_);
+    cov_ += (weight * d) * (s * s.transpose());
   }
 
-  // Any vertex inside?
+  // A straight piece of an edge from x0 to x1 (m) whose depth varies
+  // linearly from d0 to d1 (m) inside a face of the other shape with outward
+  // normal `out`, pushed along u (= out for a piece of B, -out for a piece of
+  // A): its part with positive depth enters as the 4 Gauss-Legendre nodes of
+  // its length, each a point of weight length * w_g whose centroid point lies
+  // halfway to that face. Exact: the sums above are polynomials of degree
+  // k + 1 = 5 at most along a piece, and 4 nodes integrate degree 7.
+  void add_linear_piece(const Vec3& x0, const Vec3& x1, double d0, double d1, const Vec3& u, const Vec3& out) {
+    double a = 0, b = 1;  // the positive part, as fractions of the piece
+    if (!(d0 > 0) && !(d1 > 0)) return;
+    if (!(d0 > 0)) a = d0 / (d0 - d1);
+    else if (!(d1 > 0)) b = d0 / (d0 - d1);
+    const double length = (x1 - x0).norm() * (b - a);
+    static constexpr double node[4] = {0.5 - 0.5 * 0.8611363115940526, 0.5 - 0.5 * 0.3399810435848563,
+                                       0.5 + 0.5 * 0.3399810435848563, 0.5 + 0.5 * 0.8611363115940526};
+    static constexpr double weight[4] = {0.5 * 0.3478548451374538, 0.5 * 0.6521451548625461,
+                                         0.5 * 0.6521451548625461, 0.5 * 0.3478548451374538};
+    for (int g = 0; g < 4; ++g) {
+      const double t = a + (b - a) * node[g];
+      const double d = d0 + (d1 - d0) * t;
+      if (!(d > 0)) continue;
+      const Vec3 x = x0 + t * (x1 - x0);
+      add(x, d, u, x + 0.5 * d * out, length * weight[g]);
+    }
+  }
+
+  // Nothing inside?
   bool empty() const { return !(sk_ > 0); }
   // The smooth maximum D (m); 0 if empty.
   double depth() const { return empty() ? 0.0 : kappa * sk1_ / sk_; }
 
   // Writes depth D, normal, point, gain, twist and spread into r (touching);
-  // false (r untouched) if no vertex is inside, if D is below the penetration
-  // depth `pd` (m) of the point contact (the pair's potential is u(max(PD,
-  // D)), continuous across the switch), or if the elastic force would not
-  // push B away along `expect` (the point contact's normal): D is not
-  // monotone in every d_i (see "Why k = 4" above).
-  bool finish(ContactResult& r, double pd, const Vec3& expect) const {
-    if (empty() || !(depth() > pd)) return false;
+  // false (r untouched) if nothing is inside, or if the elastic force would
+  // not push B away along `expect` (the penetration normal of GJK/EPA): D is
+  // not monotone in every d_i (see "Why k = 4" above). Then the caller keeps
+  // its point contact: a jump in the potential, so it must stay rare
+  // (bench_contact_energy counts point contacts).
+  bool finish(ContactResult& r, const Vec3& expect) const {
+    if (empty()) return false;
     const double inv = kappa / (sk_ * sk_);
     const Vec3 g = inv * ((kPower + 1) * sk_ * uk_ - kPower * sk1_ * uk1_);
     const Vec3 t = inv * ((kPower + 1) * sk_ * mk_ - kPower * sk1_ * mk1_);
@@ -121,7 +168,7 @@ class SoftDepth {
     r.point = p0 + (centroid - p0).dot(n) * n;
     r.gain = gain;
     r.twist = n.dot(t) * n;
-    // Spread: depth-weighted tangential variance of the vertices about their mean.
+    // Spread: depth-weighted tangential variance of the points about their mean.
     const Vec3 mean = x1_ / s1_;
     const Mat3 cov = cov_ / s1_ - mean * mean.transpose();
     r.spread = std::max(0.0, cov.trace() - n.dot(cov * n));

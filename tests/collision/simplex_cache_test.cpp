@@ -84,8 +84,8 @@ TEST(SimplexCache, WarmPenetrationFromTheKeptSimplexMatchesEpaStepByStep) {
       ASSERT_EQ(r.touching, epa.touching) << "run " << run << " step " << i;
       if (!epa.touching) continue;
       ++touching;
-      // The contact may replace PD by the soft depth of the patch (it is
-      // never less); PD itself is checked against EPA through the same call
+      // The contact's depth is the soft depth of the patch (soft_depth.h),
+      // not PD; PD itself is checked against EPA through the same call
       // without a patch: warm_penetration with its own copy of the simplex.
       ContactResult pd;
       Vec3 d_pd = d_epa;
@@ -94,7 +94,7 @@ TEST(SimplexCache, WarmPenetrationFromTheKeptSimplexMatchesEpaStepByStep) {
         ASSERT_NEAR(pd.depth, epa.depth, 1e-12) << "run " << run;
         ++warm;
       }
-      EXPECT_GE(r.depth, epa.depth - 1e-12);
+      EXPECT_GT(r.depth, 0);
     }
   }
   EXPECT_GT(touching, 1000);

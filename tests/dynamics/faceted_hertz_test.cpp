@@ -16,6 +16,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <numbers>
 
 using namespace grainlab;
 
@@ -36,6 +37,7 @@ Material glass() {
 struct Tessellated {
   TriMesh mesh;
   Vec3 centre_local;  // the circumsphere's centre in the shape's principal frame
+  double radius;      // volume-equivalent radius, the engine's Hertz radius (m)
 };
 
 Tessellated tessellated_sphere(int points) {
@@ -45,6 +47,7 @@ Tessellated tessellated_sphere(int points) {
   t.mesh = convex_hull(p).mesh();
   const MassProperties mp = mass_properties(t.mesh);
   t.centre_local = mp.principal_axes.transpose() * (-mp.centroid);  // Model's p_local = A^T (p - c)
+  t.radius = std::cbrt(3 * mp.volume / (4 * std::numbers::pi));
   return t;
 }
 
@@ -65,7 +68,7 @@ HertzError hertz_error(int points, bool two) {
   const Tessellated t = tessellated_sphere(points);
   const Material mat = glass();
   const double e_star = 1.0 / (2 * (1 - mat.poisson_ratio * mat.poisson_ratio) / mat.youngs_modulus);
-  const double r_star = two ? 0.5 * kR : kR;
+  const double r_star = two ? 0.5 * t.radius : t.radius;
   World w;
   w.model.law = contact_law<HertzMaterialLaw>();
   w.model.gravity = Vec3::Zero();
@@ -98,12 +101,12 @@ HertzError hertz_error(int points, bool two) {
     const Quat qa = random_rotation(), qb = random_rotation();
     for (int k = 0; k < 3; ++k) {
       const double frac = fracs[k];
-      const double delta = frac * kR;
+      const double delta = frac * t.radius;
       if (two) {
         place(0, Vec3::Zero(), qa);
-        place(1, Vec3(0, 0, 2 * kR - delta), qb);
+        place(1, Vec3(0, 0, 2 * t.radius - delta), qb);
       } else {
-        place(0, Vec3(0, 0, kR - delta), qa);
+        place(0, Vec3(0, 0, t.radius - delta), qa);
       }
       // Forget the last pose's pairs and contacts: a fresh, cold collision.
       w.state.pairs.clear();
