@@ -84,53 +84,96 @@ void gather_planes(const ConvexPolytope& poly, const std::vector<Index>& verts, 
 // (add_linear_piece) pushed out along its plane's normal. `sign` is +1 if
 // s is B (the push on B), -1 if s is A (the reaction on B). `member` marks
 // `verts` (so an edge between two of them is taken once).
+// Per-thread scratch of add_edges: o's candidate planes, and each visited
+// vertex's row of distances inside them (o's local units), computed once per
+// vertex.
+struct EdgeScratch {
+  std::vector<ConvexPolytope::Plane> plane;
+  std::vector<double> dist;
+  std::vector<std::uint32_t> violated;  // the planes one vertex is outside of
+  std::vector<std::uint32_t> row_of;  // per vertex: its row, valid where stamped
+  std::vector<std::uint32_t> lines;   // the planes that can bound one edge's envelope
+  Walk rows, member;
+};
+
 void add_edges(const PolytopeShape& s, const std::vector<Index>& verts, const PolytopeShape& o,
-               const std::vector<Index>& o_planes, double sign, Walk& member, SoftDepth& soft) {
+               const std::vector<Index>& o_planes, double sign, EdgeScratch& x, SoftDepth& soft) {
   const ConvexPolytope& poly = *s.poly;
-  const auto& planes = o.poly->planes();
+  const std::size_t np = o_planes.size();
+  if (np == 0) return;
+  x.plane.resize(np);
+  for (std::size_t k = 0; k < np; ++k) x.plane[k] = o.poly->planes()[o_planes[k]];
+  if (x.row_of.size() < poly.size()) x.row_of.resize(poly.size());
+  x.rows.begin(poly.size());
+  x.dist.clear();
   const Mat3 to_o = o.rot.transpose() * s.rot * (s.scale / o.scale);  // local s -> local o
   const Vec3 off = o.rot.transpose() * (s.pos - o.pos) / o.scale;
-  const std::size_t np = o_planes.size();
-  thread_local std::vector<double> dp, dq;
-  dp.resize(np), dq.resize(np);
-  member.begin(poly.size());
-  for (const Index v : verts) member.mark(v);
+  const auto row = [&](Index v, const Vec3& pl) -> std::size_t {  // v's row (dist may grow: an offset)
+    if (!x.rows.mark(v)) return x.row_of[v];
+    const std::size_t r = x.dist.size();
+    x.dist.resize(r + np);
+    double* d = x.dist.data() + r;
+    for (std::size_t k = 0; k < np; ++k) d[k] = x.plane[k].c - x.plane[k].m.dot(pl);
+    x.row_of[v] = static_cast<std::uint32_t>(r);
+    return r;
+  };
+  x.member.begin(poly.size());
+  for (const Index v : verts) x.member.mark(v);
   for (const Index v : verts) {
-    const Vec3 pl = to_o * poly.vertex(v) + off;
-    bool p_known = false;
+    const std::size_t rv = row(v, to_o * poly.vertex(v) + off);
+    // The planes v is outside of: an edge from v is outside o if its other
+    // end is outside one of them too (the test of a plane with both ends
+    // outside, at one dot product per plane for w).
+    x.violated.clear();
+    for (std::size_t k = 0; k < np; ++k)
+      if (x.dist[rv + k] <= 0) x.violated.push_back(static_cast<std::uint32_t>(k));
     for (const Index* it = poly.neighbours_begin(v); it != poly.neighbours_end(v); ++it) {
       const Index w = *it;
-      if (member.stamp[w] == member.generation && w < v) continue;  // taken from w's side
+      if (x.member.stamp[w] == x.member.generation && w < v) continue;  // taken from w's side
       if (!poly.is_edge(it)) continue;
-      const Vec3 ql = to_o * poly.vertex(w) + off;
-      if (!p_known) {
-        for (std::size_t k = 0; k < np; ++k) dp[k] = planes[o_planes[k]].c - planes[o_planes[k]].m.dot(pl);
-        p_known = true;
-      }
-      // The edge is outside o if one plane has both ends outside.
+      const Vec3 wl = to_o * poly.vertex(w) + off;
       bool outside = false;
-      for (std::size_t k = 0; k < np && !outside; ++k) {
-        dq[k] = planes[o_planes[k]].c - planes[o_planes[k]].m.dot(ql);
-        outside = dp[k] <= 0 && dq[k] <= 0;
-      }
-      if (outside || np == 0) continue;
-      // Lower envelope: from t = 0, the lowest line there (ties: the one
-      // falling fastest), up to the first line crossing below it, which
-      // continues it (ties: again the one falling fastest), and so on.
-      std::size_t cur = 0;
-      for (std::size_t k = 1; k < np; ++k)
+      for (const std::uint32_t k : x.violated)
+        if (x.plane[k].c - x.plane[k].m.dot(wl) <= 0) {
+          outside = true;
+          break;
+        }
+      if (outside) continue;
+      const std::size_t rw = row(w, wl);
+      const double* dp = x.dist.data() + rv;
+      const double* dq = x.dist.data() + rw;
+      // Every line l_k lies below max(dp[k], dq[k]) on the edge, so the
+      // envelope lies below U = min_k max(dp[k], dq[k]): if U <= 0 the edge is
+      // outside o (one plane has both ends outside), and only lines that dip
+      // below U somewhere (min(dp[k], dq[k]) <= U) can be on the envelope.
+      double upper = std::max(dp[0], dq[0]);
+      for (std::size_t k = 1; k < np; ++k) upper = std::min(upper, std::max(dp[k], dq[k]));
+      if (upper <= 0) continue;
+      x.lines.clear();
+      for (std::size_t k = 0; k < np; ++k)
+        if (std::min(dp[k], dq[k]) <= upper) x.lines.push_back(static_cast<std::uint32_t>(k));
+      // Lower envelope of those lines: from t = 0, the lowest line there
+      // (ties: the one falling fastest), up to the first line crossing below
+      // it, which continues it (ties: again the one falling fastest), and so on.
+      std::size_t cur = x.lines[0];
+      for (const std::uint32_t k : x.lines)
         if (dp[k] < dp[cur] || (dp[k] == dp[cur] && dq[k] - dp[k] < dq[cur] - dp[cur])) cur = k;
       const Vec3 p = s.pos + s.scale * (s.rot * poly.vertex(v));
       const Vec3 e = s.scale * (s.rot * (poly.vertex(w) - poly.vertex(v)));
       double t0 = 0;
       while (t0 < 1) {
         const double slope = dq[cur] - dp[cur];
+        if (dp[cur] + slope * t0 <= 0 && slope <= 0) break;  // the envelope is concave: outside from here on
         double t1 = 1;
         std::size_t next = cur;
-        for (std::size_t k = 0; k < np; ++k) {
+        for (const std::uint32_t k : x.lines) {
           const double sk = dq[k] - dp[k];
           if (!(sk < slope)) continue;
-          const double tc = (dp[k] - dp[cur]) / (slope - sk);  // where line k meets the current one
+          // Line k meets the current one at tc = (dp[k] - dp[cur]) / (slope - sk)
+          // (slope - sk > 0): divide only when it can be the next crossing.
+          const double num = dp[k] - dp[cur], den = slope - sk;
+          if (!(num < (t1 + 1e-12) * den)) continue;
+          const double tc = num / den;
           if (!(tc > t0)) continue;
           // The earliest crossing; of crossings equally early within rounding
           // the line falling fastest. Slopes fall at every switch: at most np.
@@ -138,7 +181,7 @@ void add_edges(const PolytopeShape& s, const std::vector<Index>& verts, const Po
           const bool tied = !earlier && tc <= t1 + 1e-12 && next != cur && sk < dq[next] - dp[next];
           if (earlier || tied) t1 = std::min(t1, tc), next = k;
         }
-        const Vec3 out = o.rot * planes[o_planes[cur]].m;
+        const Vec3 out = o.rot * x.plane[cur].m;
         soft.add_linear_piece(p + t0 * e, p + t1 * e, (dp[cur] + slope * t0) * o.scale,
                               (dp[cur] + slope * t1) * o.scale, sign * out, out);
         if (next == cur) break;
@@ -174,9 +217,9 @@ void contact_patch(const PolytopeShape& a, const PolytopeShape& b, ContactResult
   gather_planes(pb, vb, walk, qb);
 
   SoftDepth soft(b.pos);
-  thread_local Walk member;
-  add_edges(a, va, b, qb, -1.0, member, soft);
-  add_edges(b, vb, a, qa, 1.0, member, soft);
+  thread_local EdgeScratch scratch;
+  add_edges(a, va, b, qb, -1.0, scratch, soft);
+  add_edges(b, vb, a, qa, 1.0, scratch, soft);
   // Nothing inside (an overlap too thin to resolve) or a force against the
   // normal (soft_depth.h): the point contact of the penetration depth stays.
   soft.finish(r, n);

@@ -41,7 +41,7 @@
 // flat face of equally deep edges: D = kappa delta, |G| = kappa (below): the
 // face is kappa^{5/2} = 1.58 times stiffer than one Hertz point.
 // The integral along a straight piece where one plane is nearest is exact by
-// 4-point Gauss-Legendre (add_linear_piece): each node a point of weight
+// 3-point Gauss-Legendre (add_linear_piece): each node a point of weight
 // length * w_g with its depth, as a vertex was.
 //
 // The forces (exact gradient). For the points i (Gauss nodes, weight w_i),
@@ -96,48 +96,52 @@ class SoftDepth {
   // Torques about c_b, B's centre (m).
   explicit SoftDepth(const Vec3& c_b) : c_(c_b) {}
 
-  // A point at x (m) lying d > 0 (m) inside the other shape, standing for
-  // `weight` (m of edge, or 1 for a lone point); u (unit) is the push on B: A's
-  // outward face normal for a point of B, minus B's outward face normal for a
-  // point of A (the reaction of the push on A); `mid` is the point the
-  // centroid uses (m).
-  void add(const Vec3& x, double d, const Vec3& u, const Vec3& mid, double weight = 1) {
-    const Vec3 s = x - c_;
-    double dk1 = weight;  // weight d^{k-1}
-    for (int j = 1; j < kPower; ++j) dk1 *= d;
-    const double dk = dk1 * d, dk2 = dk * d;
-    s1_ += weight * d, sk_ += dk, sk1_ += dk2;
-    const Vec3 m = s.cross(u);
-    uk1_ += dk1 * u, uk_ += dk * u;
-    mk1_ += dk1 * m, mk_ += dk * m;
-    x1_ += (weight * d) * s, xk_ += dk * (mid - c_);
-    cov_ += (weight * d) * (s * s.transpose());
-  }
-
   // A straight piece of an edge from x0 to x1 (m) whose depth varies
   // linearly from d0 to d1 (m) inside a face of the other shape with outward
   // normal `out`, pushed along u (= out for a piece of B, -out for a piece of
-  // A): its part with positive depth enters as the 4 Gauss-Legendre nodes of
-  // its length, each a point of weight length * w_g whose centroid point lies
-  // halfway to that face. Exact: the sums above are polynomials of degree
-  // k + 1 = 5 at most along a piece, and 4 nodes integrate degree 7.
+  // A). Its part with positive depth enters by 3-point Gauss-Legendre: each
+  // node x_g a point of weight w_g = length * (Gauss weight) and depth d_g,
+  // contributing w_g d_g^j to S_j, its g-term along u at x_g to G and T, and
+  // its point halfway to that face to the centroid. Exact: the integrands are
+  // polynomials of degree k + 1 = 5 at most along a piece (d^{k+1}, d^k times
+  // a position), and 3 nodes integrate degree 5. Along the piece
+  // x = x0 + t (x1 - x0), so every vector sum is (sum of w f) (x0 - c) +
+  // (sum of w f t) (x1 - x0): the nodes only need scalar moments.
   void add_linear_piece(const Vec3& x0, const Vec3& x1, double d0, double d1, const Vec3& u, const Vec3& out) {
     double a = 0, b = 1;  // the positive part, as fractions of the piece
     if (!(d0 > 0) && !(d1 > 0)) return;
     if (!(d0 > 0)) a = d0 / (d0 - d1);
     else if (!(d1 > 0)) b = d0 / (d0 - d1);
-    const double length = (x1 - x0).norm() * (b - a);
-    static constexpr double node[4] = {0.5 - 0.5 * 0.8611363115940526, 0.5 - 0.5 * 0.3399810435848563,
-                                       0.5 + 0.5 * 0.3399810435848563, 0.5 + 0.5 * 0.8611363115940526};
-    static constexpr double weight[4] = {0.5 * 0.3478548451374538, 0.5 * 0.6521451548625461,
-                                         0.5 * 0.6521451548625461, 0.5 * 0.3478548451374538};
-    for (int g = 0; g < 4; ++g) {
+    const Vec3 e = x1 - x0, s0 = x0 - c_;
+    const double length = e.norm() * (b - a);
+    static constexpr double node[3] = {0.5 - 0.5 * 0.7745966692414834, 0.5, 0.5 + 0.5 * 0.7745966692414834};
+    static constexpr double weight[3] = {5.0 / 18.0, 8.0 / 18.0, 5.0 / 18.0};
+    // Moments sum w f t^i: f = d (i = 0..2), d^{k-1}, d^k (i = 0, 1), d^{k+1}.
+    double m1[3] = {0, 0, 0}, mk1[2] = {0, 0}, mk[2] = {0, 0}, mk2 = 0;
+    for (int g = 0; g < 3; ++g) {
       const double t = a + (b - a) * node[g];
       const double d = d0 + (d1 - d0) * t;
       if (!(d > 0)) continue;
-      const Vec3 x = x0 + t * (x1 - x0);
-      add(x, d, u, x + 0.5 * d * out, length * weight[g]);
+      const double w = length * weight[g];
+      double dk1 = w;  // w d^{k-1}
+      for (int j = 1; j < kPower; ++j) dk1 *= d;
+      const double dk = dk1 * d, wd = w * d;
+      m1[0] += wd, m1[1] += wd * t, m1[2] += wd * t * t;
+      mk1[0] += dk1, mk1[1] += dk1 * t;
+      mk[0] += dk, mk[1] += dk * t;
+      mk2 += dk * d;
     }
+    s1_ += m1[0], sk_ += mk[0], sk1_ += mk2;
+    uk1_ += mk1[0] * u, uk_ += mk[0] * u;
+    mk1_ += (mk1[0] * s0 + mk1[1] * e).cross(u);
+    const Vec3 moment = mk[0] * s0 + mk[1] * e;  // sum w d^k (x - c)
+    mk_ += moment.cross(u);
+    xk_ += moment + (0.5 * mk2) * out;
+    x1_ += m1[0] * s0 + m1[1] * e;
+    // sum w d s s^T with s = s0 + t e: symmetric, its upper triangle.
+    for (int i = 0; i < 3; ++i)
+      for (int j = i; j < 3; ++j)
+        cov_(i, j) += m1[0] * s0[i] * s0[j] + m1[1] * (s0[i] * e[j] + e[i] * s0[j]) + m1[2] * e[i] * e[j];
   }
 
   // Nothing inside?
@@ -170,7 +174,8 @@ class SoftDepth {
     r.twist = n.dot(t) * n;
     // Spread: depth-weighted tangential variance of the points about their mean.
     const Vec3 mean = x1_ / s1_;
-    const Mat3 cov = cov_ / s1_ - mean * mean.transpose();
+    const Mat3 upper = cov_.triangularView<Eigen::Upper>();
+    const Mat3 cov = (upper + upper.transpose() - Mat3(upper.diagonal().asDiagonal())) / s1_ - mean * mean.transpose();
     r.spread = std::max(0.0, cov.trace() - n.dot(cov * n));
     return true;
   }
@@ -180,7 +185,7 @@ class SoftDepth {
   double s1_ = 0, sk_ = 0, sk1_ = 0;
   Vec3 uk1_ = Vec3::Zero(), uk_ = Vec3::Zero(), mk1_ = Vec3::Zero(), mk_ = Vec3::Zero();
   Vec3 x1_ = Vec3::Zero(), xk_ = Vec3::Zero();
-  Mat3 cov_ = Mat3::Zero();
+  Mat3 cov_ = Mat3::Zero();  // its upper triangle
 };
 
 }  // namespace grainlab
