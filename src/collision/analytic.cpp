@@ -78,7 +78,7 @@ ContactResult collide(const PlaneShape& a, const PolytopeShape& b) {
       const double dw = depth_of(*it);
       // Each edge once: from v, unless w is below the plane too and has the smaller index.
       if (poly.is_edge(it) && !(dw > 0 && *it < v))
-        soft.add_linear_piece(x, b.pos + b.scale * (b.rot * poly.vertex(*it)), d, dw, a.normal, a.normal);
+        soft.add_linear_piece(x, b.pos + b.scale * (b.rot * poly.vertex(*it)), d, dw, a.normal);
       if (stamp[*it] == generation) continue;
       stamp[*it] = generation;
       if (dw > 0) queue.push_back(*it);

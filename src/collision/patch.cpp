@@ -181,9 +181,8 @@ void add_edges(const PolytopeShape& s, const std::vector<Index>& verts, const Po
           const bool tied = !earlier && tc <= t1 + 1e-12 && next != cur && sk < dq[next] - dp[next];
           if (earlier || tied) t1 = std::min(t1, tc), next = k;
         }
-        const Vec3 out = o.rot * x.plane[cur].m;
         soft.add_linear_piece(p + t0 * e, p + t1 * e, (dp[cur] + slope * t0) * o.scale,
-                              (dp[cur] + slope * t1) * o.scale, sign * out, out);
+                              (dp[cur] + slope * t1) * o.scale, sign * (o.rot * x.plane[cur].m));
         if (next == cur) break;
         cur = next;
         t0 = t1;

@@ -97,17 +97,17 @@ class SoftDepth {
   explicit SoftDepth(const Vec3& c_b) : c_(c_b) {}
 
   // A straight piece of an edge from x0 to x1 (m) whose depth varies
-  // linearly from d0 to d1 (m) inside a face of the other shape with outward
-  // normal `out`, pushed along u (= out for a piece of B, -out for a piece of
+  // linearly from d0 to d1 (m) inside a face of the other shape, pushed along
+  // u (that face's outward normal for a piece of B, minus it for a piece of
   // A). Its part with positive depth enters by 3-point Gauss-Legendre: each
   // node x_g a point of weight w_g = length * (Gauss weight) and depth d_g,
   // contributing w_g d_g^j to S_j, its g-term along u at x_g to G and T, and
-  // its point halfway to that face to the centroid. Exact: the integrands are
+  // x_g itself to the centroid. Exact: the integrands are
   // polynomials of degree k + 1 = 5 at most along a piece (d^{k+1}, d^k times
   // a position), and 3 nodes integrate degree 5. Along the piece
   // x = x0 + t (x1 - x0), so every vector sum is (sum of w f) (x0 - c) +
   // (sum of w f t) (x1 - x0): the nodes only need scalar moments.
-  void add_linear_piece(const Vec3& x0, const Vec3& x1, double d0, double d1, const Vec3& u, const Vec3& out) {
+  void add_linear_piece(const Vec3& x0, const Vec3& x1, double d0, double d1, const Vec3& u) {
     double a = 0, b = 1;  // the positive part, as fractions of the piece
     if (!(d0 > 0) && !(d1 > 0)) return;
     if (!(d0 > 0)) a = d0 / (d0 - d1);
@@ -136,7 +136,7 @@ class SoftDepth {
     mk1_ += (mk1[0] * s0 + mk1[1] * e).cross(u);
     const Vec3 moment = mk[0] * s0 + mk[1] * e;  // sum w d^k (x - c)
     mk_ += moment.cross(u);
-    xk_ += moment + (0.5 * mk2) * out;
+    xk_ += moment;
     x1_ += m1[0] * s0 + m1[1] * e;
     // sum w d s s^T with s = s0 + t e: symmetric, its upper triangle.
     for (int i = 0; i < 3; ++i)

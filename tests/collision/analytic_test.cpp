@@ -63,8 +63,8 @@ TEST(Analytic, BoxFlatOnPlanePushesAtFaceCentre) {
     // The edges below the plane (soft_depth.h): the bottom face's 12 m of
     // edges at depth d, and the 4 vertical edges from d at the corner to 0 a
     // height d up: S_j = 12 d^j + 4 d^{j+1}/(j+1), D = kappa S_{k+1}/S_k,
-    // gain = kappa ((k+1) S_k^2 - k S_{k+1} S_{k-1}) / S_k^2. The point lies
-    // halfway between the depth and the plane: z = -sum d^k d/2 / S_k.
+    // gain = kappa ((k+1) S_k^2 - k S_{k+1} S_{k-1}) / S_k^2. The point is the
+    // d^k-weighted centroid of the edges' points: z = -S_{k+1} / S_k.
     const double d = depth;
     const auto S = [&](int j) { return 12 * std::pow(d, j) + 4 * std::pow(d, j + 1) / (j + 1); };
     EXPECT_NEAR(r.depth, SoftDepth::kappa * S(k + 1) / S(k), 1e-13);
@@ -72,7 +72,7 @@ TEST(Analytic, BoxFlatOnPlanePushesAtFaceCentre) {
     EXPECT_LT(r.twist.norm(), 1e-12);
     EXPECT_NEAR(r.point.x(), c.x(), 1e-12);
     EXPECT_NEAR(r.point.y(), c.y(), 1e-12);
-    EXPECT_NEAR(r.point.z(), -0.5 * S(k + 1) / S(k), 1e-13);
+    EXPECT_NEAR(r.point.z(), -S(k + 1) / S(k), 1e-13);
   }
 }
 
@@ -122,7 +122,7 @@ TEST(Analytic, TiltedPolytopeEdgesBelowThePlaneByBruteForce) {
     });
     each_piece([&](const Vec3& x, double d, double len) {
       const double g = len * SoftDepth::kappa * std::pow(d, k - 1) * ((k + 1) * d * sk - k * sk1) / (sk * sk);
-      xg += g * x, sg += g, xk += len * std::pow(d, k) * (x + 0.5 * d * p.normal);
+      xg += g * x, sg += g, xk += len * std::pow(d, k) * x;
     });
     const ContactResult r = collide(p, s);
     ASSERT_EQ(r.touching, -hmin > 0);
