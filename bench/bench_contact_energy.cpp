@@ -94,14 +94,7 @@ double total_energy(const World& w, const std::map<Key, Snapshot>& contacts) {
 
 int main(int argc, char** argv) {
   grainlab::use_passive_wait_by_default(argv);
-  SettlingBedSpec spec;
-  spec.grains = 300;
-  spec.hull_points = 22;  // 40-face hulls
-  spec.seed = 5;
-  spec.spacing = 1.02;
-  spec.material.youngs_modulus = 1e7;
-  spec.material.restitution = 0.3;
-  spec.material.friction = 0;
+  SettlingBedSpec spec = frictionless_faceted_bed_spec();
   int steps = 2000;
   for (int i = 1; i < argc; ++i) {
     const bool value = i + 1 < argc;

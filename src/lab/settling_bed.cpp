@@ -8,6 +8,18 @@
 
 namespace grainlab {
 
+SettlingBedSpec frictionless_faceted_bed_spec() {
+  SettlingBedSpec spec;
+  spec.grains = 300;
+  spec.hull_points = 22;  // 40-face hulls
+  spec.seed = 5;
+  spec.spacing = 1.02;
+  spec.material.youngs_modulus = 1e7;
+  spec.material.restitution = 0.3;
+  spec.material.friction = 0;
+  return spec;
+}
+
 SettlingBed make_settling_bed(const SettlingBedSpec& spec) {
   SettlingBed bed;
   World& w = bed.world;

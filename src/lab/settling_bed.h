@@ -40,6 +40,11 @@ struct SettlingBed {
 
 SettlingBed make_settling_bed(const SettlingBedSpec& spec);
 
+// The frictionless faceted bed of issue 10 item 1 (the test
+// RestingContact.FrictionlessFacetedBedComesToRest and bench_contact_energy):
+// 300 grains of 40-face hulls, E = 1e7 Pa, restitution 0.3, no friction, seed 5.
+SettlingBedSpec frictionless_faceted_bed_spec();
+
 // True if every grain's centre is inside the box (above the floor, within the walls).
 bool all_grains_inside(const SettlingBed& bed);
 

@@ -153,16 +153,11 @@ TEST(RestingContact, UndampedBoxOnBoxGainsNoEnergy) {
 // 0.092 at 0.3 s, both flat): half the contacts were point contacts at PD
 // (edges crossing), whose potential has kinks that pumped energy in
 // (bench_contact_energy). With the edge soft depth (soft_depth.h) the bed
-// comes to rest; measured: both criteria met at 0.47 s, step 20,100.
+// comes to rest; measured: both criteria met at 0.93 s (step 40,100; the
+// ratio is below 1e-2 from 0.28 s, the kinetic energy falls slowly at the
+// end). The limit of 1.5 s leaves room for another machine's rounding.
 TEST(RestingContact, FrictionlessFacetedBedComesToRest) {
-  SettlingBedSpec spec;
-  spec.grains = 300;
-  spec.hull_points = 22;  // 40-face hulls
-  spec.seed = 5;
-  spec.spacing = 1.02;
-  spec.material.youngs_modulus = 1e7;
-  spec.material.restitution = 0.3;
-  spec.material.friction = 0;
+  SettlingBedSpec spec = frictionless_faceted_bed_spec();
   SettlingBed bed = make_settling_bed(spec);
   World& w = bed.world;
   w.settings.threads = 2;
@@ -170,7 +165,7 @@ TEST(RestingContact, FrictionlessFacetedBedComesToRest) {
   const double dt = 0.2 * w.critical_time_step();
   double ke_peak = 0, ke = 1, ub = 1;
   // Falling and piling up take ~0.05 s; then the bed must become still.
-  const int steps = static_cast<int>(1.0 / dt);
+  const int steps = static_cast<int>(1.5 / dt);
   int i = 0;
   for (; i < steps; ++i) {
     w.step(dt);
