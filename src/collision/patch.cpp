@@ -19,7 +19,7 @@
 #include "collision/soft_depth.h"
 
 #include <cstdint>
-#include <limits>
+#include <algorithm>
 #include <vector>
 
 namespace grainlab {
@@ -76,14 +76,6 @@ void gather_planes(const ConvexPolytope& poly, const std::vector<Index>& verts, 
       if (w.mark(*it)) out.push_back(*it);
 }
 
-// Adds the parts of the edges of `s` at the vertices `verts` that lie inside
-// `o` to the soft depth: along an edge x(t) = p + t (q - p), t in [0, 1], the
-// depth inside o is the lower envelope of the plane distances
-// l_k(t) = c_k - m_k . x(t) over `o_planes` (o's faces that can bound the
-// overlap), piecewise linear; each piece enters the soft depth
-// (add_linear_piece) pushed out along its plane's normal. `sign` is +1 if
-// s is B (the push on B), -1 if s is A (the reaction on B). `member` marks
-// `verts` (so an edge between two of them is taken once).
 // Per-thread scratch of add_edges: o's candidate planes, and each visited
 // vertex's row of distances inside them (o's local units), computed once per
 // vertex.
@@ -96,6 +88,14 @@ struct EdgeScratch {
   Walk rows, member;
 };
 
+// Adds the parts of the edges of `s` at the vertices `verts` that lie inside
+// `o` to the soft depth: along an edge x(t) = p + t (q - p), t in [0, 1], the
+// depth inside o is the lower envelope of the plane distances
+// l_k(t) = c_k - m_k . x(t) over `o_planes` (o's faces that can bound the
+// overlap), piecewise linear; each piece enters the soft depth
+// (add_linear_piece) pushed out along its plane's normal. `sign` is +1 if
+// s is B (the push on B), -1 if s is A (the reaction on B). `x.member`
+// marks `verts` (so an edge between two of them is taken once).
 void add_edges(const PolytopeShape& s, const std::vector<Index>& verts, const PolytopeShape& o,
                const std::vector<Index>& o_planes, double sign, EdgeScratch& x, SoftDepth& soft) {
   const ConvexPolytope& poly = *s.poly;
