@@ -84,7 +84,10 @@ struct EdgeScratch {
   std::vector<double> dist;
   std::vector<std::uint32_t> violated;  // the planes one vertex is outside of
   std::vector<std::uint32_t> row_of;  // per vertex: its row, valid where stamped
-  std::vector<std::uint32_t> lines;   // the planes that can bound one edge's envelope
+  // One edge's candidate lines: depth at its start (o's local units), slope
+  // per unit t, plane.
+  std::vector<double> l0, slope;
+  std::vector<std::uint32_t> line_plane;
   Walk rows, member;
 };
 
@@ -102,6 +105,7 @@ void add_edges(const PolytopeShape& s, const std::vector<Index>& verts, const Po
   const std::size_t np = o_planes.size();
   if (np == 0) return;
   x.plane.resize(np);
+  x.l0.resize(np), x.slope.resize(np), x.line_plane.resize(np);
   for (std::size_t k = 0; k < np; ++k) x.plane[k] = o.poly->planes()[o_planes[k]];
   if (x.row_of.size() < poly.size()) x.row_of.resize(poly.size());
   x.rows.begin(poly.size());
@@ -149,40 +153,47 @@ void add_edges(const PolytopeShape& s, const std::vector<Index>& verts, const Po
       double upper = std::max(dp[0], dq[0]);
       for (std::size_t k = 1; k < np; ++k) upper = std::min(upper, std::max(dp[k], dq[k]));
       if (upper <= 0) continue;
-      x.lines.clear();
-      for (std::size_t k = 0; k < np; ++k)
-        if (std::min(dp[k], dq[k]) <= upper) x.lines.push_back(static_cast<std::uint32_t>(k));
+      // The lines that dip below U, compacted without branches: value at
+      // t = 0 and slope along the edge, and their plane.
+      double* const l0 = x.l0.data();
+      double* const sl = x.slope.data();
+      std::uint32_t* const pl = x.line_plane.data();
+      std::size_t n = 0;
+      for (std::size_t k = 0; k < np; ++k) {
+        l0[n] = dp[k], sl[n] = dq[k] - dp[k], pl[n] = static_cast<std::uint32_t>(k);
+        n += std::min(dp[k], dq[k]) <= upper;
+      }
       // Lower envelope of those lines: from t = 0, the lowest line there
       // (ties: the one falling fastest), up to the first line crossing below
       // it, which continues it (ties: again the one falling fastest), and so on.
-      std::size_t cur = x.lines[0];
-      for (const std::uint32_t k : x.lines)
-        if (dp[k] < dp[cur] || (dp[k] == dp[cur] && dq[k] - dp[k] < dq[cur] - dp[cur])) cur = k;
+      std::size_t cur = 0;
+      for (std::size_t j = 1; j < n; ++j)
+        if (l0[j] < l0[cur] || (l0[j] == l0[cur] && sl[j] < sl[cur])) cur = j;
       const Vec3 p = s.pos + s.scale * (s.rot * poly.vertex(v));
       const Vec3 e = s.scale * (s.rot * (poly.vertex(w) - poly.vertex(v)));
       double t0 = 0;
       while (t0 < 1) {
-        const double slope = dq[cur] - dp[cur];
-        if (dp[cur] + slope * t0 <= 0 && slope <= 0) break;  // the envelope is concave: outside from here on
+        const double slope = sl[cur], lc = l0[cur];
+        if (lc + slope * t0 <= 0 && slope <= 0) break;  // the envelope is concave: outside from here on
         double t1 = 1;
         std::size_t next = cur;
-        for (const std::uint32_t k : x.lines) {
-          const double sk = dq[k] - dp[k];
+        for (std::size_t j = 0; j < n; ++j) {
+          const double sk = sl[j];
           if (!(sk < slope)) continue;
-          // Line k meets the current one at tc = (dp[k] - dp[cur]) / (slope - sk)
+          // Line j meets the current one at tc = (l0[j] - lc) / (slope - sk)
           // (slope - sk > 0): divide only when it can be the next crossing.
-          const double num = dp[k] - dp[cur], den = slope - sk;
+          const double num = l0[j] - lc, den = slope - sk;
           if (!(num < (t1 + 1e-12) * den)) continue;
           const double tc = num / den;
           if (!(tc > t0)) continue;
           // The earliest crossing; of crossings equally early within rounding
           // the line falling fastest. Slopes fall at every switch: at most np.
           const bool earlier = tc < t1 - 1e-12;
-          const bool tied = !earlier && tc <= t1 + 1e-12 && next != cur && sk < dq[next] - dp[next];
-          if (earlier || tied) t1 = std::min(t1, tc), next = k;
+          const bool tied = !earlier && tc <= t1 + 1e-12 && next != cur && sk < sl[next];
+          if (earlier || tied) t1 = std::min(t1, tc), next = j;
         }
-        soft.add_linear_piece(p + t0 * e, p + t1 * e, (dp[cur] + slope * t0) * o.scale,
-                              (dp[cur] + slope * t1) * o.scale, sign * (o.rot * x.plane[cur].m));
+        soft.add_linear_piece(p + t0 * e, p + t1 * e, (lc + slope * t0) * o.scale, (lc + slope * t1) * o.scale,
+                              sign * (o.rot * x.plane[pl[cur]].m));
         if (next == cur) break;
         cur = next;
         t0 = t1;
