@@ -27,6 +27,7 @@ bench: build
 	$(BUILD)/bench_pair_paths
 	$(BUILD)/bench_contact_energy
 	$(BUILD)/bench_sphere_lab
+	$(BUILD)/bench_paper_size
 	$(BUILD)/bench_shear_presets
 
 clean:

@@ -16,10 +16,16 @@ inline DirectShearSpec tiny_box_spec() {
   spec.grains.faces = 120;
   spec.seed = 5;
   // The densest this preparation makes in a box under five grains wide, where
-  // the walls loosen the packing (measured: e = 0.62 to 0.63).
+  // the walls loosen the packing. Its e is chaotic in the contact's rounding:
+  // measured 0.62 to 0.63 (sessions 6-7), 0.606 (session 8, the contact
+  // point moved a quarter of the way to the other surface), 0.654 (session 9,
+  // the soft depth's pieces summed in another order). Of about 90 grains,
+  // one moving changes e by about 0.01; the tolerance spans that scatter.
+  // Reaching a target density is tested where it can be: by bisection in
+  // a larger box (preparation_search_test.cpp).
   spec.specimen.deposition_friction = 0.05;
   spec.specimen.void_ratio = 0.63;
-  spec.specimen.tolerance = 0.02;
+  spec.specimen.tolerance = 0.03;
   return spec;
 }
 
