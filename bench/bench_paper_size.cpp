@@ -10,7 +10,7 @@
 //    pairs and contacts: lab/specimen_budget.h); then times K steps of its deposition (grains
 //    falling from the fill: cheaper per step than a packing).
 // 2. A packing under load costs more per grain: a small box of the same
-//    grains (MM x MM x 8 mm, about 500 grains) is prepared exactly as the
+//    grains (MM x MM x 8 mm, about 600 grains at 5 mm) is prepared as the
 //    lab prepares one (deposition, compaction, consolidation at 100 kPa), its
 //    preparation steps counted, then K steps of its shear timed: the packed
 //    rate in grain-steps/s.
