@@ -7,8 +7,9 @@
 // 1. Builds the full specimen as `grainlab run` does (grain library, fill
 //    lattice, world) and prints its grain count, the time to build it and the
 //    process's peak memory (and the lab's budget for it packed, with its
-//    pairs and contacts: lab/specimen_budget.h); then times K steps of its deposition (grains
-//    falling from the fill: cheaper per step than a packing).
+//    pairs and contacts: lab/specimen_budget.h); then times K steps of its
+//    deposition (grains falling from the fill: cheaper per step than a
+//    packing).
 // 2. A packing under load costs more per grain: a small box of the same
 //    grains (MM x MM x 8 mm, about 600 grains at 5 mm) is prepared as the
 //    lab prepares one (deposition, compaction, consolidation at 100 kPa), its
