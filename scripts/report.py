@@ -123,7 +123,8 @@ REQUIRED_COLUMNS = ["time_s", "shear_strain", "horizontal_displacement_m", "vert
 
 # Every PNG this script may write (so stale ones from an earlier report are removed).
 SINGLE_PNGS = ["stress_ratio.png", "vertical_displacement.png", "displacement_profile.png", "rotation.png",
-               "coordination_number.png", "rose_diagram.png", "fabric_psi.png", "force_chains.png"]
+               "coordination_number.png", "rose_diagram.png", "fabric_psi.png", "force_chains.png",
+               "e_log_sigma.png", "k0.png", "constrained_modulus.png"]
 COMPARISON_PNGS = ["stress_strain_overlay.png", "peaks_vs_roundness.png"]
 
 plt.rcParams.update({
@@ -189,16 +190,19 @@ class Run:
             self.series = read_csv_columns(self.dir / "series.csv")
         except (OSError, ValueError, csv.Error) as e:
             raise ReportError(f"cannot read '{self.dir / 'series.csv'}': {e}")
-        if "shear_strain" not in self.series:
-            raise ReportError(f"'{self.dir / 'series.csv'}' has no shear_strain column: not a grainlab series")
-        if len(self.series["shear_strain"]) == 0:
-            raise ReportError(f"'{self.dir / 'series.csv'}' has a header but no rows: the run has not sheared yet")
         try:
             self.info = json.loads((self.dir / "run.json").read_text())
         except (OSError, ValueError) as e:
             raise ReportError(f"cannot read '{self.dir / 'run.json'}': {e}")
         if not isinstance(self.info, dict):
             raise ReportError(f"'{self.dir / 'run.json'}' is not a JSON object")
+        self.test = get(self.info, "config", "test", default="direct-shear")
+        first = "stage" if self.test == "oedometer" else "shear_strain"
+        if first not in self.series:
+            raise ReportError(f"'{self.dir / 'series.csv'}' has no {first} column: not a grainlab {self.test} series")
+        if len(self.series[first]) == 0:
+            raise ReportError(f"'{self.dir / 'series.csv'}' has a header but no rows: the run has not "
+                              + ("loaded" if self.test == "oedometer" else "sheared") + " yet")
         self.name = self.dir.resolve().name
         self.label = self.preset or self.name
 
@@ -943,8 +947,9 @@ def figure_html(f):
         parts.append(f'<div class="note">{html.escape(n)}</div>')
     if f.png:
         parts.append(f'<a href="{html.escape(f.png)}"><img src="{html.escape(f.png)}" alt="{html.escape(f.title)}"></a>')
-        parts.append(f"<figcaption>Mirrors {f.paper} of He, Zheng &amp; Schaefer "
-                     f"(2021). {f.caption}</figcaption>")
+        source = (f"Mirrors {f.paper} of He, Zheng &amp; Schaefer (2021)." if f.paper.startswith("Fig.")
+                  else f"Cf. {f.paper}.")
+        parts.append(f"<figcaption>{source} {f.caption}</figcaption>")
     parts.append("</figure>")
     return "\n".join(parts)
 
@@ -969,7 +974,160 @@ def prepare_out(out_dir, names):
         (out_dir / n).unlink(missing_ok=True)
 
 
+# ---------------------------------------------------------------------------
+# The oedometer (config.test = "oedometer"): one series row per load stage at
+# rest (stage, target_stress_Pa, vertical_stress_Pa, floor_stress_Pa,
+# lateral_stress_Pa, K0, vertical_strain, cap_height_m, void_ratio,
+# constrained_modulus_Pa, ...) and run.json's "oedometer" group
+# (compression_index, swelling_index, max_stress_Pa, K0_at_max_stress,
+# constrained_modulus_at_max_stress_Pa, modulus_stress_exponent,
+# final_void_ratio). Stage 0 is the consolidated specimen.
+
+def oedometer_branches(run):
+    """Boolean masks of the loading rows (stage 0 and each stage above the one before) and the unloading rows."""
+    t = run.series["target_stress_Pa"]
+    load = np.ones(len(t), dtype=bool)
+    load[1:] = t[1:] > t[:-1]
+    return load, ~load
+
+
+def stress_ticks(ax, kpa, axis="x"):
+    """Plain tick labels at the given stresses (kPa) on a log axis."""
+    ticks = sorted(set(float(f"{v:.3g}") for v in kpa if np.isfinite(v) and v > 0))
+    (ax.set_xticks if axis == "x" else ax.set_yticks)(ticks, [f"{v:g}" for v in ticks])
+    (ax.xaxis if axis == "x" else ax.yaxis).set_minor_formatter(matplotlib.ticker.NullFormatter())
+
+
+def fig_e_log_sigma(run, out_dir):
+    f = Figure("Void ratio against vertical stress (e-log sigma)", "ASTM D2435",
+               "Void ratio at rest at the end of every load stage against the cap's vertical stress on a "
+               "log scale; filled: loading, open: unloading. C<sub>c</sub> and C<sub>s</sub> are run.json's "
+               "(oedometer group): the last loading increment before the first unloading, and the whole "
+               "unloading branch after the largest stress.")
+    e, sv = run.col("void_ratio"), run.col("vertical_stress_Pa")
+    if e is None or sv is None:
+        return f.missing("series.csv columns void_ratio and vertical_stress_Pa")
+    load, unload = oedometer_branches(run)
+    fig, ax = plt.subplots(figsize=(6.4, 4.0))
+    ax.plot(1e-3 * sv, e, color="#999999", lw=1.0, zorder=1)
+    cc, cs = num(get(run.info, "oedometer", "compression_index")), num(get(run.info, "oedometer", "swelling_index"))
+    ax.plot(1e-3 * sv[load], e[load], "o", color=ALL_COLOR, label=f"loading (C$_c$ = {fmt(cc, '.4f')})")
+    if np.any(unload):
+        ax.plot(1e-3 * sv[unload], e[unload], "o", mfc="white", color=BAND_COLOR,
+                label=f"unloading (C$_s$ = {fmt(cs, '.4f')})")
+    ax.set_xscale("log")
+    stress_ticks(ax, 1e-3 * sv)
+    ax.set_xlabel("vertical stress $\\sigma_v$ (kPa, log scale)")
+    ax.set_ylabel("void ratio e (–)")
+    ax.legend(loc="best")
+    ax.set_title("Compression curve")
+    return f.save(fig, out_dir, "e_log_sigma.png")
+
+
+def fig_k0(run, out_dir):
+    f = Figure("Coefficient of lateral earth pressure at rest", "ASTM D2435",
+               "K<sub>0</sub> = &sigma;<sub>h</sub>/&sigma;<sub>v</sub>: the mean normal stress on the four side "
+               "walls over the cap's stress, at rest at the end of every stage; filled: loading, open: "
+               "unloading (K<sub>0</sub> rises on unloading: the lateral stress is locked in). Jaky's "
+               "1 &minus; sin &phi;' needs the test's friction angle, which the oedometer does not measure.")
+    k0, sv = run.col("K0"), run.col("vertical_stress_Pa")
+    if k0 is None or sv is None:
+        return f.missing("series.csv columns K0 and vertical_stress_Pa")
+    load, unload = oedometer_branches(run)
+    fig, ax = plt.subplots(figsize=(6.4, 4.0))
+    ax.plot(1e-3 * sv, k0, color="#999999", lw=1.0, zorder=1)
+    ax.plot(1e-3 * sv[load], k0[load], "o", color=ALL_COLOR, label="loading")
+    if np.any(unload):
+        ax.plot(1e-3 * sv[unload], k0[unload], "o", mfc="white", color=BAND_COLOR, label="unloading")
+    ax.set_xscale("log")
+    stress_ticks(ax, 1e-3 * sv)
+    ax.set_xlabel("vertical stress $\\sigma_v$ (kPa, log scale)")
+    ax.set_ylabel("$K_0 = \\sigma_h / \\sigma_v$ (–)")
+    ax.set_ylim(0, max(1.0, float(np.nanmax(k0)) * 1.1))
+    ax.legend(loc="best")
+    ax.set_title("K$_0$ against vertical stress")
+    return f.save(fig, out_dir, "k0.png")
+
+
+def fig_constrained_modulus(run, out_dir):
+    f = Figure("Constrained modulus against stress", "Effective-medium theory",
+               "M = &Delta;&sigma;<sub>v</sub>/&Delta;&epsilon;<sub>v</sub> of each loading increment against its "
+               "mean stress, log-log. The line is M ~ &sigma;<sup>n</sup> with run.json's n (least squares over "
+               "the loading increments); effective-medium theory of Hertz spheres with a fixed contact network "
+               "gives n = 1/3, contacts forming under load raise it.")
+    m, sv = run.col("constrained_modulus_Pa"), run.col("vertical_stress_Pa")
+    if m is None or sv is None:
+        return f.missing("series.csv columns constrained_modulus_Pa and vertical_stress_Pa")
+    load, _ = oedometer_branches(run)
+    mid = np.full(len(sv), np.nan)
+    mid[1:] = 0.5 * (sv[1:] + sv[:-1])
+    ok = load & np.isfinite(m) & (m > 0)
+    if not np.any(ok):
+        return f.missing("loading increments with a positive modulus")
+    fig, ax = plt.subplots(figsize=(6.4, 4.0))
+    ax.plot(1e-3 * mid[ok], 1e-6 * m[ok], "o", color=ALL_COLOR, label="loading increments")
+    n = num(get(run.info, "oedometer", "modulus_stress_exponent"))
+    if n is not None and np.sum(ok) >= 2:
+        x = mid[ok]
+        c = np.exp(np.mean(np.log(m[ok]) - n * np.log(x)))
+        xs = np.geomspace(x.min(), x.max(), 50)
+        ax.plot(1e-3 * xs, 1e-6 * c * xs ** n, "-", color=BAND_COLOR, label=f"M ~ σ$^{{{n:.2f}}}$")
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    stress_ticks(ax, 1e-3 * mid[ok])
+    stress_ticks(ax, 1e-6 * m[ok], axis="y")
+    ax.set_xlabel("mean stress of the increment (kPa, log scale)")
+    ax.set_ylabel("constrained modulus M (MPa, log scale)")
+    ax.legend(loc="best")
+    ax.set_title("Constrained modulus")
+    return f.save(fig, out_dir, "constrained_modulus.png")
+
+
+def oedometer_results_rows(run):
+    i = run.info
+    o = lambda k: get(i, "oedometer", k)
+    dr = num(get(i, "preparation", "relative_density"))
+    unb = run.col("unbalanced_force_ratio")
+    return [
+        ("compression index C<sub>c</sub>", fmt(o("compression_index"), ".4f")),
+        ("swelling index C<sub>s</sub>", fmt(o("swelling_index"), ".4f")),
+        ("largest vertical stress", fmt(1e-3 * (num(o("max_stress_Pa")) or float("nan")), ".4g", "kPa")),
+        ("K<sub>0</sub> at the largest stress", fmt(o("K0_at_max_stress"), ".3f")),
+        ("constrained modulus at the largest stress",
+         fmt(1e-6 * (num(o("constrained_modulus_at_max_stress_Pa")) or float("nan")), ".4g", "MPa")),
+        ("power n of M ~ &sigma;<sup>n</sup> (loading)", fmt(o("modulus_stress_exponent"), ".3f")),
+        ("achieved void ratio e after preparation", fmt(get(i, "preparation", "void_ratio"), ".4f")),
+        ("achieved relative density D<sub>r</sub>", fmt(None if dr is None else 100 * dr, ".1f", "%")),
+        ("final void ratio", fmt(o("final_void_ratio"), ".4f")),
+        ("unbalanced force ratio, largest at a stage's end", fmt(None if unb is None else np.nanmax(unb), ".3g")),
+        ("wall time", fmt_duration(get(i, "timings", "wall_s"))),
+        ("steps / simulated time", f"{esc(get(i, 'timings', 'steps'))} / {fmt(get(i, 'timings', 'simulated_s'), '.4g', 's')}"),
+        ("stages in series.csv", str(len(run.series["stage"]))),
+    ]
+
+
+def oedometer_report(run, out_dir):
+    prepare_out(out_dir, SINGLE_PNGS)
+    figs = [fn(run, out_dir) for fn in (fig_e_log_sigma, fig_k0, fig_constrained_modulus)]
+    shear_only = ("gap between", "shear speed", "final strain")
+    inputs = [r for r in inputs_rows(run) if not r[0].startswith(shear_only)]
+    stresses = get(run.info, "config", "oedometer", "stresses", default=[])
+    inputs.insert(8, ("load stages after consolidation",
+                      ", ".join(fmt(1e-3 * x, ".4g") for x in stresses) + " kPa"))
+    subtitle = (f"Oedometer run <code>{html.escape(run.name)}</code> (folder <code>{html.escape(str(run.dir.resolve()))}"
+                f"</code>): grain class {esc(run.preset)}, sand preset {esc(run.sand)}, "
+                f"{esc(get(run.info, 'grains'))} grains in a rigid square ring.")
+    blocks = ['<h2>Inputs and results</h2>\n<div class="tables">',
+              table_html(inputs, "Inputs (run.json)"),
+              table_html(oedometer_results_rows(run), "Results"), "</div>", "<h2>Figures</h2>"]
+    blocks += [figure_html(f) for f in figs]
+    return write_page(out_dir, f"grainlab oedometer report: {run.name}", subtitle, blocks), figs
+
+
+
 def single_report(run, out_dir):
+    if run.test == "oedometer":
+        return oedometer_report(run, out_dir)
     prepare_out(out_dir, SINGLE_PNGS)
     figs = [fn(run, out_dir) for fn in (fig_stress_ratio, fig_vertical_displacement, fig_displacement_profile,
                                         fig_rotation, fig_coordination, fig_rose, fig_fabric_psi, fig_force_chains)]
@@ -987,6 +1145,10 @@ def single_report(run, out_dir):
 
 
 def comparison_report(runs, out_dir):
+    other = [r.name for r in runs if r.test != "direct-shear"]
+    if other:
+        raise ReportError(f"a comparison report compares direct shear runs; {', '.join(other)} "
+                          "is another test: report it on its own")
     prepare_out(out_dir, COMPARISON_PNGS)
     figs = [fig_overlay(runs, out_dir), fig_peaks_vs_roundness(runs, out_dir)]
     subtitle = f"{len(runs)} direct shear runs: " + ", ".join(

@@ -43,6 +43,7 @@ struct RunOptions {
   bool resume = false;
   bool quiet = false;
   bool no_report = false;
+  std::string test = "direct-shear";  // for --print-defaults and --default
 };
 
 // The summary value named key (top level), 0 if the test has none.
@@ -79,13 +80,17 @@ void write_run_json(const LabTest& test, const std::filesystem::path& out, doubl
 
 int run(const RunOptions& o) {
   if (o.print_defaults) {
-    fmt::print("{}", default_config_toml());
+    fmt::print("{}", default_config_toml(o.test));
     return 0;
   }
   if (o.file.empty() && !o.use_defaults)
     input_error("grainlab run needs a config file (grainlab run test.toml), or --default for the "
                 "embedded default; `grainlab run --print-defaults > test.toml` writes one to edit");
-  const DirectShearSpec spec = o.use_defaults ? parse_config(default_config_toml(), "<embedded default>")
+  if (!o.file.empty() && o.test != "direct-shear")
+    input_error("--test {} chooses the test of --default and --print-defaults; a config file names its own "
+                "(its top-level key test = \"{}\")",
+                o.test, o.test);
+  const DirectShearSpec spec = o.use_defaults ? parse_config(default_config_toml(o.test), "<embedded default>")
                                               : load_config(o.file);
 
   // Everything that can refuse the run happens before anything is written
@@ -124,12 +129,14 @@ int run(const RunOptions& o) {
   };
 
   const World& w = test.world();
-  fmt::print("grainlab run: {} grains ({} preset), box {:.1f} x {:.1f} x {:.1f} mm, {:.0f} kPa, "
-             "dt {:.3g} s, density scaling {:g}, shear speed {:.3g} mm/s, {} threads\n",
-             w.model.bodies.size(), spec.grains.folder.empty() ? spec.grains.preset : spec.grains.folder,
+  const double shear_speed = summary_value(test, "shear_speed_m_per_s");
+  fmt::print("grainlab run: {}, {} grains ({} preset), box {:.1f} x {:.1f} x {:.1f} mm, {:.0f} kPa, "
+             "dt {:.3g} s, density scaling {:g}{}, {} threads\n",
+             spec.test, w.model.bodies.size(), spec.grains.folder.empty() ? spec.grains.preset : spec.grains.folder,
              spec.box.length * 1e3, spec.box.width * 1e3, spec.box.height * 1e3,
              spec.consolidation.normal_stress * 1e-3, test.time_step(), w.model.density_scale,
-             summary_value(test, "shear_speed_m_per_s") * 1e3, resolve_threads(w.settings.threads));
+             shear_speed > 0 ? fmt::format(", shear speed {:.3g} mm/s", shear_speed * 1e3) : "",
+             resolve_threads(w.settings.threads));
   std::signal(SIGINT, on_stop_signal);
   std::signal(SIGTERM, on_stop_signal);
 
@@ -204,8 +211,10 @@ Command add_run_command(CLI::App& app) {
   auto o = std::make_shared<RunOptions>();
   auto* cmd = app.add_subcommand(
       "run",
-      "run a virtual direct shear test from a TOML config: prepare a specimen at the target density, "
-      "consolidate under the servo-held normal stress, shear to the final strain. Writes series.csv "
+      "run a virtual lab test from a TOML config: prepare a specimen at the target density, "
+      "consolidate under the servo-held normal stress, then shear it to the final strain (test = "
+      "\"direct-shear\") or hold each stress of a loading schedule in a rigid ring (test = \"oedometer\"). "
+      "Writes series.csv "
       "(one row per strain interval, SI units, with rotation, coordination, fabric and shear-band columns), "
       "run.json (inputs, achieved density, peaks, Love-Weber stress), checkpoint.bin, analysis/ (final "
       "displacement profile, shear band, fabric, force chains), paraview/ (grains, contacts and walls every "
@@ -213,6 +222,9 @@ Command add_run_command(CLI::App& app) {
   cmd->add_option("file", o->file, "config file (TOML); see --print-defaults for every key with its unit");
   cmd->add_flag("--print-defaults", o->print_defaults, "print a complete, commented default config and exit");
   cmd->add_flag("--default", o->use_defaults, "run the embedded default (a small box of sub-angular grains)");
+  cmd->add_option("--test", o->test,
+                  "the test of --default and --print-defaults: direct-shear (the default) or oedometer")
+      ->check(CLI::IsMember(lab_test_names()));
   cmd->add_flag("--resume", o->resume, "continue from output.folder/checkpoint.bin (same config)");
   cmd->add_flag("--quiet", o->quiet, "no progress lines");
   cmd->add_flag("--no-report", o->no_report, "skip the HTML report at the end (write it later with grainlab report)");

@@ -26,7 +26,7 @@ PreparedRun prepare_run(const DirectShearSpec& spec, const fs::path& out, bool r
       r.specimen.own_e_max = run.record.value("own_e_max", r.specimen.own_e_max);
       r.specimen.deposition_friction = run.record.value("deposition_friction", r.specimen.deposition_friction);
     }
-    run.test = make_lab_test("direct-shear", r);
+    run.test = make_lab_test(r.test, r);
     return run;
   }
   check_specimen_fits(spec);
@@ -67,9 +67,16 @@ PreparedRun prepare_run(const DirectShearSpec& spec, const fs::path& out, bool r
     Preparation p = prepare_to_target(r, {}, print);
     r.specimen.deposition_friction = p.friction;
     run.record["trials"] = to_json(p.trials);
-    run.test = std::move(p.test);
+    if (r.test == "direct-shear") {
+      run.test = std::move(p.test);
+    } else {
+      // The trials were direct shear preparations: the test prepares its
+      // own specimen again with the friction found (one more preparation).
+      fmt::print("preparing the {} specimen with deposition friction {:.4g}\n", r.test, p.friction);
+      run.test = make_lab_test(r.test, r);
+    }
   } else {
-    run.test = make_lab_test("direct-shear", r);
+    run.test = make_lab_test(r.test, r);
   }
   run.record["own_e_min"] = r.specimen.own_e_min;
   run.record["own_e_max"] = r.specimen.own_e_max;

@@ -110,6 +110,8 @@ class ByteReader {
     for (Vec3& x : v) x = vec();
     return v;
   }
+  // The next n bytes as they are (what ByteWriter::raw wrote).
+  std::span<const std::uint8_t> raw(std::size_t n) { return {take(n), n}; }
   // A count of items of at least `item_size` bytes each, checked against what is left.
   std::size_t count(std::size_t item_size) {
     const std::uint64_t n = u64();

@@ -8,9 +8,11 @@
 
 #include "core/error.h"
 #include "io/spec_fields.h"
+#include "lab/lab_test.h"
 #include "lab/sand_presets.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <toml++/toml.h>
 
 #include <algorithm>
@@ -36,6 +38,7 @@ namespace {
   SpecField { table, key, doc, [](DirectShearSpec& s) -> SpecFieldRef { return &s.member; } }
 
 const std::array kFields{
+    GL_FIELD("", "test", test, "the lab test: \"direct-shear\" (reads [shear]) | \"oedometer\" (reads [oedometer])"),
     GL_FIELD("", "seed", seed, "seed of every random choice (grain shapes, sizes, placement); same seed, same run"),
 
     GL_FIELD("grains", "preset", grains.preset, "synthetic grain class: glass-beads | rounded | sub-angular | angular"),
@@ -61,7 +64,7 @@ const std::array kFields{
     GL_FIELD("box", "length", box.length, "m, along the shear direction x"),
     GL_FIELD("box", "width", box.width, "m, along y"),
     GL_FIELD("box", "height", box.height, "m, target specimen height after preparation"),
-    GL_FIELD("box", "gap", box.gap, "m, opening between the lower and upper halves"),
+    GL_FIELD("box", "gap", box.gap, "m, opening between the lower and upper halves (direct shear)"),
 
     GL_FIELD("specimen", "relative_density", specimen.relative_density, "target Dr = (e_max - e)/(e_max - e_min) on specimen.indices, in [0, 1]"),
     GL_FIELD("specimen", "indices", specimen.indices, "\"own\": Dr on the grains' own index voids (own_e_min/own_e_max; measured when 0) | \"lab\": on the lab's e_min/e_max"),
@@ -81,6 +84,8 @@ const std::array kFields{
     GL_FIELD("shear", "speed", shear.speed, "m/s of the upper half; 0 = from numerics.inertial_number"),
     GL_FIELD("shear", "final_strain", shear.final_strain, "shear strain d_h / L at which the test ends, in (0, 1]"),
 
+    GL_FIELD("oedometer", "stresses", oedometer.stresses, "Pa, the cap's stresses after consolidation, each held to rest, in order; one below the one before unloads"),
+
     GL_FIELD("numerics", "time_step", numerics.time_step, "s; 0 = time_step_fraction x the critical step"),
     GL_FIELD("numerics", "time_step_fraction", numerics.time_step_fraction, "fraction of the critical step used when time_step = 0, in (0, 1]"),
     GL_FIELD("numerics", "density_scaling", numerics.density_scaling, "factor on inertia (not weight); 0 = automatic"),
@@ -95,13 +100,14 @@ const std::array kFields{
 
 #undef GL_FIELD
 
-constexpr std::array<SpecTable, 8> kTables{{
+constexpr std::array<SpecTable, 9> kTables{{
     {"grains", "the grains: a synthetic class or a folder of scanned meshes, and the sieve range"},
     {"material", "grain material and contact law (SI units)"},
-    {"box", "the direct shear box"},
+    {"box", "the box: split in two halves for the direct shear, one rigid ring (no gap) for the oedometer"},
     {"specimen", "the specimen's target density"},
     {"consolidation", "servo-controlled consolidation under the top cap"},
-    {"shear", "shearing: the upper half moves along x"},
+    {"shear", "shearing: the upper half moves along x", "direct-shear"},
+    {"oedometer", "one-dimensional compression in the box with its gap closed (a rigid ring): the loading schedule", "oedometer"},
     {"numerics", "time step, density scaling, threads"},
     {"output", "what the run writes, and where"},
 }};
@@ -253,7 +259,11 @@ std::string toml_value(const SpecFieldRef& ref) {
         else if constexpr (std::is_same_v<T, int>) return fmt::format("{}", *p);
         else if constexpr (std::is_same_v<T, std::uint64_t>) return fmt::format("{}", *p);
         else if constexpr (std::is_same_v<T, std::string>) return toml_string(*p);
-        else return toml_string(contact_law_name(*p));
+        else if constexpr (std::is_same_v<T, std::vector<double>>) {
+          std::string s = "[";
+          for (std::size_t i = 0; i < p->size(); ++i) s += (i ? ", " : "") + toml_double((*p)[i]);
+          return s + "]";
+        } else return toml_string(contact_law_name(*p));
       },
       ref);
 }
@@ -262,16 +272,20 @@ std::string write_toml(const DirectShearSpec& spec_in, bool comments) {
   DirectShearSpec spec = spec_in;  // the field refs need a mutable spec
   std::string out;
   if (comments) {
-    out +=
-        "# grainlab direct shear run. SI units throughout (m, kg, s, N, Pa).\n"
+    out += fmt::format(
+        "# grainlab {} run. SI units throughout (m, kg, s, N, Pa).\n"
         "# Every key is optional: a key left out keeps the value shown here.\n"
-        "# Run it with: grainlab run FILE\n\n";
+        "# Run it with: grainlab run FILE\n\n",
+        spec.test);
   }
   std::string_view table = "";
   for (const SpecField& f : kFields) {
+    const auto t = std::find_if(kTables.begin(), kTables.end(), [&](const SpecTable& x) { return x.name == f.table; });
+    // The commented defaults leave out the tables only another test reads
+    // (config.toml keeps every key: resuming compares them all).
+    if (comments && t != kTables.end() && !t->test.empty() && t->test != spec.test) continue;
     if (f.table != table) {
       table = f.table;
-      const auto t = std::find_if(kTables.begin(), kTables.end(), [&](const SpecTable& x) { return x.name == table; });
       out += "\n";
       if (comments) out += fmt::format("# {}\n", t->doc);
       out += fmt::format("[{}]\n", table);
@@ -305,6 +319,9 @@ void validate_spec(const DirectShearSpec& spec_in, const std::string& source, co
     const SpecFieldRef ref = f.ref(spec);
     if (const auto* p = std::get_if<double*>(&ref); p && !std::isfinite(**p))
       impossible(source, lines, f.dotted(), toml_double(**p), "a finite number");
+    if (const auto* p = std::get_if<std::vector<double>*>(&ref))
+      for (const double x : **p)
+        if (!std::isfinite(x)) impossible(source, lines, f.dotted(), toml_value(ref), "a list of finite numbers");
   }
   const auto need = [&](bool ok, std::string_view key, double value, std::string_view rule) {
     if (!ok) impossible(source, lines, key, fmt::format("{}", value), rule);
@@ -312,6 +329,10 @@ void validate_spec(const DirectShearSpec& spec_in, const std::string& source, co
   const auto need_s = [&](bool ok, std::string_view key, const std::string& value, std::string_view rule) {
     if (!ok) impossible(source, lines, key, toml_string(value), rule);
   };
+
+  const std::vector<std::string> tests = lab_test_names();
+  need_s(std::find(tests.begin(), tests.end(), spec.test) != tests.end(), "test", spec.test,
+         fmt::format("one of the lab tests: \"{}\"", fmt::join(tests, "\", \"")));
 
   const GrainsSpec& g = spec.grains;
   const bool known_class =
@@ -390,6 +411,11 @@ void validate_spec(const DirectShearSpec& spec_in, const std::string& source, co
   need(sh.final_strain > 0 && sh.final_strain <= 1, "shear.final_strain", sh.final_strain,
        "in (0, 1] (a fraction: 10 % is 0.10)");
 
+  const std::vector<double>& stresses = spec.oedometer.stresses;
+  if (stresses.empty() || *std::min_element(stresses.begin(), stresses.end()) <= 0)
+    impossible(source, lines, "oedometer.stresses", toml_value(&spec.oedometer.stresses),
+               "a list of at least one stress > 0 (Pa; e.g. [200e3, 400e3, 800e3, 200e3])");
+
   const NumericsSpec& nu = spec.numerics;
   need(nu.time_step >= 0, "numerics.time_step", nu.time_step, ">= 0 (s; 0 picks a safe step)");
   need(nu.time_step_fraction > 0 && nu.time_step_fraction <= 1, "numerics.time_step_fraction",
@@ -439,6 +465,15 @@ void assign(const SpecField& f, const SpecFieldRef& ref, const toml::node& n, co
         } else if constexpr (std::is_same_v<T, std::string>) {
           if (!n.is_string()) wrong("a string in quotes");
           *p = *n.value_exact<std::string>();
+        } else if constexpr (std::is_same_v<T, std::vector<double>>) {
+          const toml::array* a = n.as_array();
+          if (!a) wrong("a list of numbers in SI units (e.g. [200e3, 400e3])");
+          p->clear();
+          for (const toml::node& x : *a) {
+            if (x.is_integer()) p->push_back(static_cast<double>(*x.value_exact<std::int64_t>()));
+            else if (x.is_floating_point()) p->push_back(*x.value_exact<double>());
+            else wrong(fmt::format("a list of numbers in SI units (e.g. [200e3, 400e3]); one entry is {}", describe(x)));
+          }
         } else {
           if (!n.is_string()) wrong("a string in quotes");
           try {
@@ -509,7 +544,7 @@ DirectShearSpec parse_config(std::string_view toml_text, const std::string& sour
         std::vector<std::string> top = table_names();
         for (const SpecField& f : kFields)
           if (f.table.empty()) top.emplace_back(f.key);
-        hint = suggestion(name, top) + fmt::format(" Top-level keys: seed; tables: {}.", join(table_names()));
+        hint = suggestion(name, top) + fmt::format(" Top-level keys: test, seed; tables: {}.", join(table_names()));
       }
       input_error("{}: unknown key '{}'.{}", where(source_name, line), name, hint);
     }
@@ -558,7 +593,13 @@ void validate(const DirectShearSpec& spec, const std::string& source_name) {
   validate_spec(spec, source_name, nullptr);
 }
 
-std::string default_config_toml() { return write_toml(DirectShearSpec{}, true); }
+std::string default_config_toml(const std::string& test) {
+  DirectShearSpec spec;
+  spec.test = test;
+  if (test == "oedometer") spec.output.folder = "runs/oedometer";
+  validate_spec(spec, "the defaults", nullptr);  // an unknown test name
+  return write_toml(spec, true);
+}
 
 std::string to_toml(const DirectShearSpec& spec) { return write_toml(spec, false); }
 

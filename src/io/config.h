@@ -27,8 +27,9 @@ DirectShearSpec parse_config(std::string_view toml_text, const std::string& sour
 // Throws InputError naming source_name and the dotted key of the first impossible value.
 void validate(const DirectShearSpec& spec, const std::string& source_name);
 
-// A complete config with every key, its unit and meaning in a comment, and the struct defaults.
-std::string default_config_toml();
+// A complete config for lab test `test` (lab/lab_registry.cpp) with every key it
+// reads, its unit and meaning in a comment, and the struct defaults.
+std::string default_config_toml(const std::string& test = "direct-shear");
 
 // Every key of `spec` as TOML, exact (shortest round-trip doubles); parse_config reads it back equal.
 std::string to_toml(const DirectShearSpec& spec);

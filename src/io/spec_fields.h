@@ -10,11 +10,12 @@
 #include <string>
 #include <string_view>
 #include <variant>
+#include <vector>
 
 namespace grainlab {
 
 // A typed pointer to one field of a DirectShearSpec.
-using SpecFieldRef = std::variant<double*, int*, std::string*, std::uint64_t*, ContactLaw*>;
+using SpecFieldRef = std::variant<double*, int*, std::string*, std::uint64_t*, ContactLaw*, std::vector<double>*>;
 
 // One config key.
 struct SpecField {
@@ -33,6 +34,7 @@ struct SpecField {
 struct SpecTable {
   std::string_view name;
   std::string_view doc;
+  std::string_view test = "";  // the one lab test that reads it ("" = every test)
 };
 
 // All keys, in file order (top-level keys first, then table by table).

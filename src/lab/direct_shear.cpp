@@ -212,6 +212,11 @@ bool DirectShearTest::advance(int max_steps) {
     // What is sheared: a specimen deposited with more friction than the
     // test's compacts further once the test friction is back.
     if (p == ShearPhase::Consolidate) check_preparation(void_ratio(), bulk_void_ratio(), "after consolidation");
+    if (p == ShearPhase::Consolidate && end_after_consolidation_) {
+      p_.cap_z_at_shear = world_.state.walls[Cap].x.z();  // the consolidated height (achieved_void_ratio)
+      enter(ShearPhase::Done);
+      return false;
+    }
     enter(static_cast<ShearPhase>(static_cast<int>(p) + 1));
     return true;  // a phase ended
   }

@@ -116,6 +116,9 @@ class DirectShearTest final : public LabTest {
   double bulk_void_ratio() const;
   // Lets compaction end at any density (for trial preparations; the caller judges them).
   void accept_any_density() { accept_any_density_ = true; }
+  // Ends the test (phase Done) when consolidation is at rest, without
+  // shearing: the preparation of another test in this box (lab/oedometer.h).
+  void end_after_consolidation() { end_after_consolidation_ = true; }
   std::int64_t phase_step(ShearPhase p) const { return p_.phase_start_step[static_cast<int>(p)]; }
 
  private:
@@ -151,6 +154,7 @@ class DirectShearTest final : public LabTest {
   double shear_speed_ = 0;
   Index grain_material_ = 0;
   bool accept_any_density_ = false;
+  bool end_after_consolidation_ = false;
   std::vector<std::string> observer_columns_;
   SampleObserver observer_;
 };

@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace grainlab {
 
@@ -81,6 +82,14 @@ struct ShearSpec {
   double final_strain = 0.10;       // d_h / L
 };
 
+// The oedometer (lab/oedometer.h): after consolidation under
+// consolidation.normal_stress, the cap's servo holds each stress of the
+// schedule in turn until the specimen is at rest (a stress below the one
+// before unloads).
+struct OedometerSpec {
+  std::vector<double> stresses = {200e3, 400e3, 800e3, 400e3, 200e3, 100e3};  // Pa, in order
+};
+
 struct NumericsSpec {
   double time_step = 0;             // s; 0 = time_step_fraction x critical
   double time_step_fraction = 0.4;  // of a conservative critical step (Hertz stiffness at 1 % overlap,
@@ -99,12 +108,14 @@ struct OutputSpec {
 };
 
 struct DirectShearSpec {
+  std::string test = "direct-shear";  // the lab test (lab/lab_registry.cpp): direct-shear | oedometer
   GrainsSpec grains;
   MaterialSpec material;
   BoxSpec box;
   SpecimenSpec specimen;
   ConsolidationSpec consolidation;
   ShearSpec shear;
+  OedometerSpec oedometer;
   NumericsSpec numerics;
   OutputSpec output;
   std::uint64_t seed = 1;

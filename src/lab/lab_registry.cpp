@@ -2,6 +2,7 @@
 #include "core/error.h"
 #include "lab/direct_shear.h"
 #include "lab/lab_test.h"
+#include "lab/oedometer.h"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -24,6 +25,7 @@ struct Entry {
 
 constexpr Entry kTests[] = {
     {"direct-shear", &make<DirectShearTest>},
+    {"oedometer", &make<OedometerTest>},
 };
 
 }  // namespace

@@ -31,6 +31,8 @@ class StressServo {
 
   // One control step: sets the wall's z velocity from the forces of this step.
   void control(World& w, double dt);
+  // The target stress (Pa).
+  double target() const { return target_; }
   // The stress the wall carries now (Pa).
   double stress(const World& w) const { return w.state.walls[wall_].force.z() / area_; }
   // The integral term (Pa).

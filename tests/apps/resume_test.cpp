@@ -80,9 +80,14 @@ class Resume : public ::testing::Test {
   // packing this box makes (e 0.633) never met the consolidation's rest
   // test, a known limit of faceted packings (issue 10 item 1); measured 1 of
   // 7 seeds with and without the cache (docs/direct_shear.md).
-  fs::path config(const std::string& name) {
+  fs::path config(const std::string& name, const std::string& oedometer_stresses = "") {
     const fs::path p = dir_ / (name + ".toml");
-    std::ofstream(p) << "seed = 3\n[grains]\nshapes = 4\nfaces = 120\n"
+    std::ofstream(p) << "seed = 3\n"
+                     << (oedometer_stresses.empty()
+                             ? std::string()
+                             : "test = \"oedometer\"\n[oedometer]\nstresses = " + oedometer_stresses +
+                                   "\n[material]\npreset = \"glass-beads\"\n")  // spheres: cheap
+                     << "[grains]\nshapes = 4\nfaces = 120\n"
                      << "[box]\nlength = 0.003\nwidth = 0.003\nheight = 0.002\n"
                      << "[specimen]\nindices = \"lab\"\ndeposition_friction = 0.05\ntolerance = 1.0\n"
                      << "[shear]\nfinal_strain = 0.01\n[numerics]\nthreads = 1\n"
@@ -136,4 +141,34 @@ TEST_F(Resume, KilledDuringShearThenResumedGivesTheSameSeries) {
     EXPECT_GE(want.size(), 4u) << pvd;  // 0, 0.4 % and 0.8 % of strain, and the end
     EXPECT_EQ(grainlab::read_pvd(dir_ / "killed" / pvd), want) << pvd;
   }
+}
+
+TEST_F(Resume, OedometerKilledBetweenStagesThenResumedGivesTheSameSeries) {
+  const std::string stresses = "[150e3, 200e3, 300e3]";
+  ::setenv("GRAINLAB_PYTHON", "/nonexistent/python3", 1);  // no report: only the series matter here
+  const pid_t straight = start_run(config("straight", stresses), false, dir_ / "straight.log");
+  const fs::path killed = config("killed", stresses);
+  const fs::path series = dir_ / "killed" / "series.csv";
+  const pid_t pid = start_run(killed, false, dir_ / "killed.log");
+  ASSERT_GT(straight, 0);
+  ASSERT_GT(pid, 0);
+  while (lines_in(series) < 3) {  // the header, stage 0 and stage 1
+    int status = 0;
+    ASSERT_EQ(waitpid(pid, &status, WNOHANG), 0) << "the run ended early: " << read_file(dir_ / "killed.log");
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  kill(pid, SIGTERM);
+  ASSERT_EQ(wait_exit(pid), 130) << read_file(dir_ / "killed.log");
+  ASSERT_EQ(wait_exit(straight), 0) << read_file(dir_ / "straight.log");
+  const std::string expected = read_file(dir_ / "straight" / "series.csv");
+  ASSERT_EQ(lines_in(dir_ / "straight" / "series.csv"), 5u) << expected;  // header and stages 0-3
+  ASSERT_EQ(expected.rfind("time_s,stage,target_stress_Pa,vertical_stress_Pa", 0), 0u) << expected;
+  EXPECT_LT(lines_in(series), 5u) << "killed after the end";
+  ASSERT_EQ(wait_exit(start_run(killed, true, dir_ / "resumed.log")), 0) << read_file(dir_ / "resumed.log");
+  ::unsetenv("GRAINLAB_PYTHON");
+  EXPECT_NE(read_file(dir_ / "resumed.log").find("resuming at step"), std::string::npos);
+  EXPECT_EQ(read_file(series), expected);
+  const std::string run_json = read_file(dir_ / "killed" / "run.json");
+  EXPECT_NE(run_json.find("\"compression_index\""), std::string::npos) << run_json;
+  EXPECT_NE(run_json.find("\"test\": \"oedometer\""), std::string::npos) << run_json;
 }

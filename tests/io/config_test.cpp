@@ -51,11 +51,45 @@ TEST(Config, DefaultConfigNamesEveryKeyWithAComment) {
     }
 }
 
+TEST(Config, OedometerDefaultsHaveTheScheduleAndNotTheShear) {
+  const std::string text = default_config_toml("oedometer");
+  EXPECT_TRUE(has(text, "test = \"oedometer\""));
+  EXPECT_TRUE(has(text, "[oedometer]"));
+  EXPECT_TRUE(has(text, "stresses = [200000.0, 400000.0, 800000.0, 400000.0, 200000.0, 100000.0]"));
+  EXPECT_FALSE(has(text, "\n[shear]\n"));
+  EXPECT_TRUE(has(default_config_toml(), "\n[shear]\n"));
+  EXPECT_FALSE(has(default_config_toml(), "\n[oedometer]\n"));
+  const DirectShearSpec s = parse_config(text, "oedometer.toml");
+  EXPECT_EQ(s.test, "oedometer");
+  EXPECT_EQ(s.output.folder, "runs/oedometer");
+  EXPECT_THROW(default_config_toml("triaxial"), InputError);
+}
+
+TEST(Config, OedometerScheduleIsAListOfPositiveStresses) {
+  const DirectShearSpec s = parse_config("test = \"oedometer\"\n[oedometer]\nstresses = [50000, 1e5, 2.5e5]\n", "o.toml");
+  EXPECT_EQ(s.oedometer.stresses, (std::vector<double>{50e3, 100e3, 250e3}));
+  std::string msg = parse_error("[oedometer]\nstresses = []\n");
+  EXPECT_TRUE(has(msg, "oedometer.stresses = [] is impossible")) << msg;
+  EXPECT_TRUE(has(msg, "line 2")) << msg;
+  msg = parse_error("[oedometer]\nstresses = [1e5, -2e5]\n");
+  EXPECT_TRUE(has(msg, "at least one stress > 0")) << msg;
+  msg = parse_error("[oedometer]\nstresses = [1e5, \"200 kPa\"]\n");
+  EXPECT_TRUE(has(msg, "a list of numbers in SI units")) << msg;
+  EXPECT_TRUE(has(msg, "the string \"200 kPa\"")) << msg;
+  msg = parse_error("[oedometer]\nstresses = 1e5\n");
+  EXPECT_TRUE(has(msg, "expects a list of numbers")) << msg;
+  msg = parse_error("[oedometer]\nstresses = [1e5, nan]\n");
+  EXPECT_TRUE(has(msg, "a list of finite numbers")) << msg;
+  msg = parse_error("test = \"triaxial\"\n");
+  EXPECT_TRUE(has(msg, "test = \"triaxial\" is impossible")) << msg;
+  EXPECT_TRUE(has(msg, "\"direct-shear\", \"oedometer\"")) << msg;
+}
+
 TEST(Config, EmptyFileGivesTheDefaults) { expect_same_spec(parse_config("", "empty.toml"), DirectShearSpec{}); }
 
 TEST(Config, ToTomlRoundTripsEveryField) {
   const DirectShearSpec s = test::all_fields_changed();
-  ASSERT_EQ(config_differences(s, DirectShearSpec{}).size(), 47u) << "a field was left at its default";
+  ASSERT_EQ(config_differences(s, DirectShearSpec{}).size(), 49u) << "a field was left at its default";
   const DirectShearSpec back = parse_config(to_toml(s), "roundtrip.toml");
   expect_same_spec(back, s);
   EXPECT_TRUE(config_differences(back, s).empty());
@@ -295,7 +329,9 @@ TEST(Config, SpecToJsonHasTheConfigKeys) {
   EXPECT_EQ(j["material"]["friction"].get<double>(), s.material.grain.friction);
   EXPECT_EQ(j["grains"]["faces"].get<int>(), 321);
   EXPECT_EQ(j["output"]["folder"].get<std::string>(), s.output.folder);
-  EXPECT_EQ(j.size(), 9u);  // seed and eight tables
+  EXPECT_EQ(j["test"].get<std::string>(), "oedometer");
+  EXPECT_EQ(j["oedometer"]["stresses"].get<std::vector<double>>(), s.oedometer.stresses);
+  EXPECT_EQ(j.size(), 11u);  // test, seed and nine tables
 
   test::IoTempDir dir;
   write_json_file(dir.path / "run.json", j);

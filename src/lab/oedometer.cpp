@@ -1,0 +1,331 @@
+// The oedometer protocol, its measurements and its summary (definitions in
+// oedometer.h).
+#include "lab/oedometer.h"
+
+#include "core/error.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace grainlab {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr std::int64_t kMaxStageSteps = 400000;  // as the direct shear's phases
+
+// Column indices of oedometer_series_columns().
+enum Column { Time, Stage, Target, Vertical, FloorStress, Lateral, K0, Strain, Height, VoidRatio, Modulus };
+
+}  // namespace
+
+const std::vector<std::string>& oedometer_series_columns() {
+  static const std::vector<std::string> columns = {
+      "time_s",          "stage",           "target_stress_Pa", "vertical_stress_Pa", "floor_stress_Pa",
+      "lateral_stress_Pa", "K0",            "vertical_strain",  "cap_height_m",       "void_ratio",
+      "constrained_modulus_Pa", "coordination_number", "kinetic_energy_J", "unbalanced_force_ratio"};
+  return columns;
+}
+
+OedometerSummary summarise_oedometer(const std::vector<std::vector<double>>& rows) {
+  OedometerSummary s;
+  s.swelling_index = s.modulus_stress_exponent = kNaN;
+  if (rows.size() < 2) return s;
+  s.final_void_ratio = rows.back()[VoidRatio];
+  // The largest stress and the loading increments before it (each above the last).
+  std::size_t top = 0;
+  for (std::size_t i = 1; i < rows.size(); ++i)
+    if (rows[i][Target] > rows[top][Target]) top = i;
+  s.max_stress = rows[top][Vertical];
+  s.k0_at_max_stress = rows[top][K0];
+  s.modulus_at_max_stress = rows[top][Modulus];
+  const auto index = [&](std::size_t a, std::size_t b) {  // -de / dlog10(sigma) from row a to row b
+    return -(rows[b][VoidRatio] - rows[a][VoidRatio]) / std::log10(rows[b][Vertical] / rows[a][Vertical]);
+  };
+  std::size_t first_unload = rows.size();
+  for (std::size_t i = 1; i < rows.size(); ++i)
+    if (rows[i][Target] < rows[i - 1][Target]) {
+      first_unload = i;
+      break;
+    }
+  const std::size_t last_load = first_unload - 1;  // the row before the first unloading
+  s.compression_index = last_load >= 1 ? index(last_load - 1, last_load) : kNaN;
+  // Unloading branch after the largest stress: down to its lowest stress.
+  std::size_t low = top;
+  for (std::size_t i = top + 1; i < rows.size() && rows[i][Target] < rows[i - 1][Target]; ++i) low = i;
+  if (low > top) s.swelling_index = index(top, low);
+  // n of M ~ sigma^n: least squares of log M on the log mean stress of each loading increment.
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  int n = 0;
+  for (std::size_t i = 1; i <= last_load; ++i) {
+    const double m = rows[i][Modulus];
+    if (!(m > 0)) continue;
+    const double x = std::log(0.5 * (rows[i][Vertical] + rows[i - 1][Vertical])), y = std::log(m);
+    sx += x, sy += y, sxx += x * x, sxy += x * y, ++n;
+  }
+  if (n >= 2 && n * sxx - sx * sx > 0) s.modulus_stress_exponent = (n * sxy - sx * sy) / (n * sxx - sx * sx);
+  return s;
+}
+
+DirectShearSpec OedometerTest::preparation_spec(const DirectShearSpec& spec) {
+  DirectShearSpec p = spec;
+  p.test = "direct-shear";
+  p.box.gap = 0;  // the halves' slabs meet: one rigid ring
+  return p;
+}
+
+OedometerTest::OedometerTest(const DirectShearSpec& spec) : spec_(spec), prep_(preparation_spec(spec)) {
+  prep_.end_after_consolidation();
+  World& w = prep_.world();
+  // Runs after the preparation's servo, which is idle once it is done.
+  w.add_controller([this](World& world, double dt) {
+    if (p_.phase == OedometerPhase::Load) servo_.control(world, dt);
+  });
+}
+
+double OedometerTest::stage_stress(int stage) const {
+  return stage == 0 ? spec_.consolidation.normal_stress : spec_.oedometer.stresses[static_cast<std::size_t>(stage - 1)];
+}
+
+double OedometerTest::cap_height() const { return world().state.walls[Cap].x.z(); }
+
+double OedometerTest::vertical_stress() const { return world().state.walls[Cap].force.z() / area(); }
+
+double OedometerTest::floor_stress() const { return -world().state.walls[ShearBoxWall::Floor].force.z() / area(); }
+
+double OedometerTest::lateral_stress() const {
+  // The grains push the -x walls towards -x and the +x walls towards +x.
+  const auto& walls = world().state.walls;
+  const double fx = walls[LowerXp].force.x() + walls[UpperXp].force.x() - walls[LowerXm].force.x() -
+                    walls[UpperXm].force.x();
+  const double fy = walls[LowerYp].force.y() + walls[UpperYp].force.y() - walls[LowerYm].force.y() -
+                    walls[UpperYm].force.y();
+  const double h = cap_height();
+  return 0.25 * (fx / (spec_.box.width * h) + fy / (spec_.box.length * h));
+}
+
+double OedometerTest::vertical_strain() const {
+  if (p_.phase == OedometerPhase::Prepare) return 0;
+  return (p_.height_at_load - cap_height()) / p_.height_at_load;
+}
+
+double OedometerTest::specimen_volume() const { return area() * cap_height(); }
+
+int OedometerTest::phase_index() const {
+  // deposit 0, compact 1, consolidate 2 (the preparation's), load 3, done 4.
+  return p_.phase == OedometerPhase::Prepare ? prep_.phase_index() : 2 + static_cast<int>(p_.phase);
+}
+
+std::string OedometerTest::phase_name() const {
+  switch (p_.phase) {
+    case OedometerPhase::Prepare: return prep_.phase_name();
+    case OedometerPhase::Load: return "load";
+    case OedometerPhase::Done: return "done";
+  }
+  return "?";
+}
+
+double OedometerTest::progress() const {
+  if (p_.phase == OedometerPhase::Done) return 1;
+  if (p_.phase == OedometerPhase::Prepare) return 0;
+  return static_cast<double>(p_.stage - 1) / stages();
+}
+
+void OedometerTest::start_loading() {
+  p_.phase = OedometerPhase::Load;
+  p_.load_start_step = world().state.step;
+  p_.height_at_load = cap_height();
+  p_.reference = world().state.bodies;
+  p_.stage = 0;
+  record_row();  // the consolidated specimen
+  start_stage(1);
+}
+
+void OedometerTest::start_stage(int stage) {
+  p_.stage = stage;
+  p_.stage_start_step = world().state.step;
+  p_.calm.reset();
+  p_.window.reset();
+  const double d = prep_.mean_diameter();
+  servo_ = StressServo(Cap, area(), stage_stress(stage), 2e-4 * d / time_step());
+}
+
+bool OedometerTest::stage_at_rest() {
+  const auto& c = spec_.consolidation;
+  const bool calm =
+      std::abs(vertical_stress() / stage_stress(p_.stage) - 1) <= c.tolerance && kinetic_small_against_elastic(world());
+  bool rest = p_.calm.check(calm);
+  if (rest && p_.window.averaged_ratio(world()) > c.max_unbalanced) {
+    p_.calm.reset();
+    rest = false;
+  }
+  if (p_.calm.count() == 0 || rest) p_.window.reset();
+  const std::int64_t in_stage = world().state.step - p_.stage_start_step;
+  if (!rest && in_stage > kMaxStageSteps)
+    throw RunError(fmt::format(
+        "oedometer stage {} ({:.4g} Pa) did not come to rest in {} steps (cap stress {:.4g} Pa, kinetic energy "
+        "{:.3g} J): try a smaller time step, more damping (lower restitution) or a larger "
+        "consolidation.max_unbalanced",
+        p_.stage, stage_stress(p_.stage), in_stage, vertical_stress(), world().kinetic_energy()));
+  return rest;
+}
+
+bool OedometerTest::advance(int max_steps) {
+  if (p_.phase == OedometerPhase::Done) return false;
+  if (p_.phase == OedometerPhase::Prepare) {
+    if (!prep_.advance(max_steps)) start_loading();
+    return true;  // a preparation phase ended, or the steps are done
+  }
+  World& w = world();
+  for (int i = 0; i < max_steps; ++i) {
+    w.step(time_step());
+    p_.window.add(w.body_forces());
+    if (w.state.step % kCheckEvery != 0 || !stage_at_rest()) continue;
+    record_row();
+    if (p_.stage == stages()) {
+      p_.phase = OedometerPhase::Done;
+      return false;
+    }
+    start_stage(p_.stage + 1);
+    return true;  // a row was recorded
+  }
+  return true;
+}
+
+void OedometerTest::record_row() {
+  const World& w = world();
+  const double sv = vertical_stress(), eps = vertical_strain();
+  double modulus = kNaN;
+  if (!p_.rows.empty()) {
+    const auto& prev = p_.rows.back();
+    modulus = (sv - prev[Vertical]) / (eps - prev[Strain]);
+  }
+  const double sh = lateral_stress();
+  std::vector<double> row = {w.state.time,
+                             static_cast<double>(p_.stage),
+                             stage_stress(p_.stage),
+                             sv,
+                             floor_stress(),
+                             sh,
+                             sv > 0 ? sh / sv : kNaN,
+                             eps,
+                             cap_height(),
+                             void_ratio(),
+                             modulus,
+                             prep_.coordination_number(),
+                             w.kinetic_energy(),
+                             unbalanced_force_ratio(w)};
+  if (observer_) {
+    const std::vector<double> extra = observer_(*this);
+    if (extra.size() != observer_columns_.size())
+      throw RunError(fmt::format("sample observer gave {} values for {} columns", extra.size(),
+                                 observer_columns_.size()));
+    row.insert(row.end(), extra.begin(), extra.end());
+  }
+  p_.rows.push_back(std::move(row));
+}
+
+std::vector<std::string> OedometerTest::series_columns() const {
+  std::vector<std::string> c = oedometer_series_columns();
+  c.insert(c.end(), observer_columns_.begin(), observer_columns_.end());
+  return c;
+}
+
+void OedometerTest::set_sample_observer(std::vector<std::string> columns, SampleObserver observer) {
+  observer_columns_ = std::move(columns);
+  observer_ = std::move(observer);
+}
+
+std::vector<SummaryValue> OedometerTest::summary() const {
+  std::vector<SummaryValue> v;
+  // The preparation's values (group "preparation") and the grain size.
+  for (const SummaryValue& s : prep_.summary())
+    if (s.group == "preparation" || s.key == "mean_equivalent_diameter_m") v.push_back(s);
+  const OedometerSummary o = summarise_oedometer(p_.rows);
+  v.push_back({"oedometer", "compression_index", o.compression_index});
+  v.push_back({"oedometer", "swelling_index", o.swelling_index});
+  v.push_back({"oedometer", "max_stress_Pa", o.max_stress});
+  v.push_back({"oedometer", "K0_at_max_stress", o.k0_at_max_stress});
+  v.push_back({"oedometer", "constrained_modulus_at_max_stress_Pa", o.modulus_at_max_stress});
+  v.push_back({"oedometer", "modulus_stress_exponent", o.modulus_stress_exponent});
+  v.push_back({"oedometer", "final_void_ratio", o.final_void_ratio});
+  return v;
+}
+
+std::string OedometerTest::status_line() const {
+  if (p_.phase == OedometerPhase::Prepare) return prep_.status_line();
+  return fmt::format("stage {}/{}  target {:.1f} kPa  sigma_v {:.1f} kPa  K0 {:.3f}  strain {:.5f}  e {:.4f}",
+                     p_.stage, stages(), stage_stress(p_.stage) * 1e-3, vertical_stress() * 1e-3,
+                     vertical_stress() > 0 ? lateral_stress() / vertical_stress() : 0.0, vertical_strain(),
+                     void_ratio());
+}
+
+std::string OedometerTest::phase_note() const {
+  if (p_.phase == OedometerPhase::Prepare) return prep_.phase_note();
+  if (p_.phase != OedometerPhase::Load || p_.rows.empty()) return "";
+  return fmt::format("consolidated under {:.0f} kPa: e = {:.4f}, K0 = {:.3f}; now {} stages, each held to rest",
+                     stage_stress(0) * 1e-3, p_.rows.front()[VoidRatio], p_.rows.front()[K0], stages());
+}
+
+std::string OedometerTest::result_line() const {
+  const OedometerSummary o = summarise_oedometer(p_.rows);
+  return fmt::format("Cc {:.4f}, Cs {:.4f}; at {:.0f} kPa K0 {:.3f} and constrained modulus {:.3g} MPa; M ~ "
+                     "sigma^{:.2f}",
+                     o.compression_index, o.swelling_index, o.max_stress * 1e-3, o.k0_at_max_stress,
+                     o.modulus_at_max_stress * 1e-6, o.modulus_stress_exponent);
+}
+
+BandGeometry OedometerTest::band_geometry() const {
+  // No imposed shear: a profile of horizontal displacement, for the record.
+  BandGeometry b;
+  b.z_min = 0;
+  b.z_max = p_.phase == OedometerPhase::Prepare ? cap_height() : p_.height_at_load;
+  b.layer = prep_.mean_diameter();
+  b.direction = Vec3::UnitX();
+  b.strain = 0;
+  b.length = spec_.box.length;
+  return b;
+}
+
+std::vector<std::uint8_t> OedometerTest::save() const {
+  ByteWriter b;
+  const std::vector<std::uint8_t> prep = prep_.save();
+  b.u64(prep.size());
+  b.raw(prep);
+  b.i32(static_cast<std::int32_t>(p_.phase));
+  b.i32(p_.stage);
+  p_.calm.save(b);
+  p_.window.save(b);
+  servo_.save(b);
+  b.f64(p_.height_at_load);
+  b.i64(p_.load_start_step), b.i64(p_.stage_start_step);
+  b.u64(p_.rows.size());
+  for (const auto& r : p_.rows) b.f64s(r);
+  b.u64(p_.reference.size());
+  for (const BodyState& body : p_.reference) b.vec(body.x), b.vec(body.v), b.vec(body.w), b.quat(body.q);
+  return std::move(b.bytes);
+}
+
+void OedometerTest::load(std::span<const std::uint8_t> bytes) {
+  ByteReader r(bytes, "the oedometer protocol state", " Start the run again without --resume.");
+  prep_.load(r.raw(r.count(1)));
+  const std::int32_t phase = r.i32();
+  if (phase < 0 || phase > static_cast<int>(OedometerPhase::Done)) r.corrupted("an unknown phase");
+  p_.phase = static_cast<OedometerPhase>(phase);
+  p_.stage = r.i32();
+  if (p_.stage < 0 || p_.stage > stages()) r.corrupted("a stage outside the schedule");
+  if (p_.phase == OedometerPhase::Load) start_stage(p_.stage);  // the servo's target; the counters next
+  p_.calm.load(r);
+  p_.window.load(r);
+  servo_.load(r);
+  p_.height_at_load = r.f64();
+  p_.load_start_step = r.i64(), p_.stage_start_step = r.i64();
+  p_.rows.resize(r.count(8));
+  for (auto& row : p_.rows) row = r.f64s();
+  p_.reference.resize(r.count(13 * 8));
+  for (BodyState& body : p_.reference) body.x = r.vec(), body.v = r.vec(), body.w = r.vec(), body.q = r.quat();
+  r.expect_end();
+}
+
+}  // namespace grainlab

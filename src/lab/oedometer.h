@@ -1,0 +1,151 @@
+// The virtual oedometer: one-dimensional compression (ASTM D2435 in spirit)
+// of a specimen in a rigid square ring, frictionless or with
+// material.wall_friction, under a schedule of cap stresses.
+//
+// Box and preparation: the direct shear box of lab/shear_box.h with its gap
+// closed, so that its eight side slabs form one rigid ring of L x W; the
+// specimen is prepared by the direct shear protocol's first three phases
+// (deposit, compact, consolidate under consolidation.normal_stress: the same
+// preparation, density target and checks; lab/direct_shear.h), which ends
+// there instead of shearing.
+//
+// Loading (phase "load"): the cap's servo (lab/stress_servo.h, integral
+// reset at each stage) holds each stress of oedometer.stresses in turn until
+// the specimen is at rest by the consolidation's criteria: the cap stress
+// within consolidation.tolerance of the stage's, the kinetic energy below
+// 1e-2 of the contacts' elastic energy for kCalmChecks checks in a row, and
+// the unbalanced-force ratio of the grains' resultants averaged over that
+// calm run below consolidation.max_unbalanced. A stress below the one
+// before unloads. One series row is recorded at rest at the end of every
+// stage, the consolidated state first (stage 0).
+//
+// Measured (SI, compression positive):
+//   sigma_v  = N_cap / (L W), the cap's stress (the servo's);
+//   sigma_f  = N_floor / (L W): below sigma_v by the side walls' friction;
+//   sigma_h  = mean of the four side walls' normal stresses, each wall's
+//              normal force over its area in contact, side x H (H the cap height);
+//   K0       = sigma_h / sigma_v;
+//   eps_v    = (H_0 - H) / H_0, H_0 the height at stage 0;
+//   e        = (L W H - V_s) / V_s;
+//   M        = (sigma_v,i - sigma_v,i-1) / (eps_v,i - eps_v,i-1), the
+//              constrained (oedometric) modulus of stage i's increment.
+// Summary (oedometer_summary):
+//   Cc = -(e_i - e_{i-1}) / log10(sigma_i / sigma_{i-1}) of the last loading
+//        increment before the first unloading (the highest stresses: for
+//        sands the e-log sigma line steepens with stress, and the last
+//        increment is the nearest to the normal compression line);
+//   Cs = -(e_min_stress - e_max) / log10(sigma_min / sigma_max) over the
+//        whole unloading branch after the largest stress (NaN without one);
+//   K0 and M at the largest stress; the power n of M ~ sigma^n fitted by
+//   least squares to log M against the log of each loading increment's
+//   mean stress (effective-medium theory of Hertz spheres with a fixed
+//   contact network: n = 1/3; contacts that form under load raise it).
+#pragma once
+
+#include "lab/direct_shear.h"
+#include "lab/lab_test.h"
+#include "lab/rest_criteria.h"
+#include "lab/stress_servo.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace grainlab {
+
+enum class OedometerPhase : std::int32_t { Prepare = 0, Load = 1, Done = 2 };
+
+// Column names (with units) of the series: one row per stage at rest.
+const std::vector<std::string>& oedometer_series_columns();
+
+// What the oedometer's stage rows give (see the top of this file).
+struct OedometerSummary {
+  double compression_index = 0;    // Cc
+  double swelling_index = 0;       // Cs (NaN without unloading)
+  double max_stress = 0;           // Pa, the largest stage stress reached
+  double k0_at_max_stress = 0;
+  double modulus_at_max_stress = 0;  // Pa, M of the increment that reached it
+  double modulus_stress_exponent = 0;  // n of M ~ sigma^n over the loading increments (NaN: fewer than 2)
+  double final_void_ratio = 0;
+};
+// From the series rows (oedometer_series_columns() order); zeros before two rows.
+OedometerSummary summarise_oedometer(const std::vector<std::vector<double>>& rows);
+
+class OedometerTest final : public LabTest {
+ public:
+  // Builds the preparation (the direct shear box with its gap closed).
+  explicit OedometerTest(const DirectShearSpec& spec);
+  OedometerTest(const OedometerTest&) = delete;
+  OedometerTest& operator=(const OedometerTest&) = delete;
+
+  // LabTest.
+  const DirectShearSpec& spec() const override { return spec_; }
+  World& world() override { return prep_.world(); }
+  const World& world() const override { return prep_.world(); }
+  double time_step() const override { return prep_.time_step(); }
+  bool advance(int max_steps) override;
+  int phase_index() const override;
+  std::string phase_name() const override;
+  bool loading() const override { return p_.phase == OedometerPhase::Load; }
+  bool done() const override { return p_.phase == OedometerPhase::Done; }
+  std::int64_t loading_start_step() const override { return p_.load_start_step; }
+  double progress() const override;
+  double final_progress() const override { return 1; }
+  std::string progress_label() const override { return "fraction of the load stages done"; }
+  std::string status_line() const override;
+  std::string phase_note() const override;
+  std::string result_line() const override;
+  std::vector<std::string> series_columns() const override;
+  const std::vector<std::vector<double>>& series() const override { return p_.rows; }
+  void set_sample_observer(std::vector<std::string> columns, SampleObserver observer) override;
+  const std::vector<BodyState>& reference() const override { return p_.reference; }
+  std::vector<SummaryValue> summary() const override;
+  double specimen_volume() const override;
+  double boundary_stress() const override { return vertical_stress(); }
+  BandGeometry band_geometry() const override;
+  std::vector<std::uint8_t> save() const override;
+  void load(std::span<const std::uint8_t> bytes) override;
+
+  // Oedometer measurements (definitions above).
+  OedometerPhase phase() const { return p_.phase; }
+  int stage() const { return p_.stage; }               // the stage held now (0: consolidation)
+  int stages() const { return static_cast<int>(spec_.oedometer.stresses.size()); }
+  double stage_stress(int stage) const;                // Pa, stage 0: consolidation.normal_stress
+  double vertical_stress() const;                      // Pa, on the cap
+  double floor_stress() const;                         // Pa, on the floor
+  double lateral_stress() const;                       // Pa, mean of the four side walls
+  double vertical_strain() const;                      // since stage 0 (0 before)
+  double void_ratio() const { return prep_.void_ratio(); }
+  // The preparation (the direct shear protocol ending after consolidation).
+  const DirectShearTest& preparation() const { return prep_; }
+
+ private:
+  struct Progress {
+    OedometerPhase phase = OedometerPhase::Prepare;
+    std::int32_t stage = 0;
+    CalmCounter calm;
+    ForceWindow window;
+    double height_at_load = 0;      // m, H_0
+    std::int64_t load_start_step = 0;
+    std::int64_t stage_start_step = 0;
+    std::vector<std::vector<double>> rows;
+    std::vector<BodyState> reference;  // grains at stage 0
+  };
+
+  static DirectShearSpec preparation_spec(const DirectShearSpec& spec);
+  void start_loading();
+  void start_stage(int stage);
+  bool stage_at_rest();
+  void record_row();
+  double area() const { return spec_.box.length * spec_.box.width; }
+  double cap_height() const;
+
+  DirectShearSpec spec_;
+  DirectShearTest prep_;
+  Progress p_;
+  StressServo servo_{0, 0, 0, 0};  // set at each stage
+  std::vector<std::string> observer_columns_;
+  SampleObserver observer_;
+};
+
+}  // namespace grainlab
