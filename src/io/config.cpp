@@ -38,7 +38,7 @@ namespace {
   SpecField { table, key, doc, [](DirectShearSpec& s) -> SpecFieldRef { return &s.member; } }
 
 const std::array kFields{
-    GL_FIELD("", "test", test, "the lab test: \"direct-shear\" (reads [shear]) | \"oedometer\" (reads [oedometer])"),
+    GL_FIELD("", "test", test, "the lab test: \"direct-shear\" (reads [shear]) | \"oedometer\" (reads [oedometer]) | \"triaxial\" (reads [triaxial])"),
     GL_FIELD("", "seed", seed, "seed of every random choice (grain shapes, sizes, placement); same seed, same run"),
 
     GL_FIELD("grains", "preset", grains.preset, "synthetic grain class: glass-beads | rounded | sub-angular | angular"),
@@ -86,6 +86,8 @@ const std::array kFields{
 
     GL_FIELD("oedometer", "stresses", oedometer.stresses, "Pa, the cap's stresses after consolidation, each held to rest, in order; one below the one before unloads"),
 
+    GL_FIELD("triaxial", "final_strain", triaxial.final_strain, "axial strain (H_0 - H)/H_0 at which the test ends, in (0, 0.5]"),
+
     GL_FIELD("numerics", "time_step", numerics.time_step, "s; 0 = time_step_fraction x the critical step"),
     GL_FIELD("numerics", "time_step_fraction", numerics.time_step_fraction, "fraction of the critical step used when time_step = 0, in (0, 1]"),
     GL_FIELD("numerics", "density_scaling", numerics.density_scaling, "factor on inertia (not weight); 0 = automatic"),
@@ -93,14 +95,14 @@ const std::array kFields{
     GL_FIELD("numerics", "threads", numerics.threads, "worker threads; 0 = all cores"),
 
     GL_FIELD("output", "folder", output.folder, "where the run writes its files"),
-    GL_FIELD("output", "strain_interval", output.strain_interval, "sample series.csv every this much shear strain"),
+    GL_FIELD("output", "strain_interval", output.strain_interval, "sample series.csv every this much shear strain (triaxial: axial strain)"),
     GL_FIELD("output", "checkpoint_interval", output.checkpoint_interval, "s of wall-clock time between checkpoints"),
-    GL_FIELD("output", "snapshot_interval", output.snapshot_interval, "ParaView snapshot (paraview/*.vtp) every this much shear strain; 0 = start and end of shear only"),
+    GL_FIELD("output", "snapshot_interval", output.snapshot_interval, "ParaView snapshot (paraview/*.vtp) every this much shear (triaxial: axial) strain; 0 = start and end of shear only"),
 };
 
 #undef GL_FIELD
 
-constexpr std::array<SpecTable, 9> kTables{{
+constexpr std::array<SpecTable, 10> kTables{{
     {"grains", "the grains: a synthetic class or a folder of scanned meshes, and the sieve range"},
     {"material", "grain material and contact law (SI units)"},
     {"box", "the box: split in two halves for the direct shear, one rigid ring (no gap) for the oedometer"},
@@ -108,6 +110,7 @@ constexpr std::array<SpecTable, 9> kTables{{
     {"consolidation", "servo-controlled consolidation under the top cap"},
     {"shear", "shearing: the upper half moves along x", "direct-shear"},
     {"oedometer", "one-dimensional compression in the box with its gap closed (a rigid ring): the loading schedule", "oedometer"},
+    {"triaxial", "drained triaxial compression: all five walls servo-held at consolidation.normal_stress (sigma_3), then the cap moves down", "triaxial"},
     {"numerics", "time step, density scaling, threads"},
     {"output", "what the run writes, and where"},
 }};
@@ -416,6 +419,9 @@ void validate_spec(const DirectShearSpec& spec_in, const std::string& source, co
     impossible(source, lines, "oedometer.stresses", toml_value(&spec.oedometer.stresses),
                "a list of at least one stress > 0 (Pa; e.g. [200e3, 400e3, 800e3, 200e3])");
 
+  need(spec.triaxial.final_strain > 0 && spec.triaxial.final_strain <= 0.5, "triaxial.final_strain",
+       spec.triaxial.final_strain, "in (0, 0.5] (axial strain: 15 % is 0.15)");
+
   const NumericsSpec& nu = spec.numerics;
   need(nu.time_step >= 0, "numerics.time_step", nu.time_step, ">= 0 (s; 0 picks a safe step)");
   need(nu.time_step_fraction > 0 && nu.time_step_fraction <= 1, "numerics.time_step_fraction",
@@ -426,8 +432,10 @@ void validate_spec(const DirectShearSpec& spec_in, const std::string& source, co
 
   const OutputSpec& o = spec.output;
   need_s(!o.folder.empty(), "output.folder", o.folder, "a folder name, not empty");
-  need(o.strain_interval > 0 && o.strain_interval <= sh.final_strain, "output.strain_interval", o.strain_interval,
-       fmt::format("> 0 and at most shear.final_strain = {}", sh.final_strain));
+  const bool triaxial = spec.test == "triaxial";
+  const double final_strain = triaxial ? spec.triaxial.final_strain : sh.final_strain;
+  need(o.strain_interval > 0 && o.strain_interval <= final_strain, "output.strain_interval", o.strain_interval,
+       fmt::format("> 0 and at most {} = {}", triaxial ? "triaxial.final_strain" : "shear.final_strain", final_strain));
   need(o.checkpoint_interval > 0, "output.checkpoint_interval", o.checkpoint_interval, "> 0 (s of wall-clock time)");
   need(o.snapshot_interval >= 0, "output.snapshot_interval", o.snapshot_interval,
        ">= 0 (shear strain between ParaView snapshots; 0 = start and end of shear only)");
@@ -596,7 +604,7 @@ void validate(const DirectShearSpec& spec, const std::string& source_name) {
 std::string default_config_toml(const std::string& test) {
   DirectShearSpec spec;
   spec.test = test;
-  if (test == "oedometer") spec.output.folder = "runs/oedometer";
+  if (test == "oedometer" || test == "triaxial") spec.output.folder = "runs/" + test;
   validate_spec(spec, "the defaults", nullptr);  // an unknown test name
   return write_toml(spec, true);
 }

@@ -90,6 +90,13 @@ struct OedometerSpec {
   std::vector<double> stresses = {200e3, 400e3, 800e3, 400e3, 200e3, 100e3};  // Pa, in order
 };
 
+// The drained triaxial test (lab/triaxial.h): isotropic consolidation at
+// consolidation.normal_stress (sigma_3), then axial compression at the
+// inertial number's speed to this axial strain.
+struct TriaxialSpec {
+  double final_strain = 0.15;  // axial strain (H_0 - H) / H_0 at which the test ends
+};
+
 struct NumericsSpec {
   double time_step = 0;             // s; 0 = time_step_fraction x critical
   double time_step_fraction = 0.4;  // of a conservative critical step (Hertz stiffness at 1 % overlap,
@@ -108,7 +115,7 @@ struct OutputSpec {
 };
 
 struct DirectShearSpec {
-  std::string test = "direct-shear";  // the lab test (lab/lab_registry.cpp): direct-shear | oedometer
+  std::string test = "direct-shear";  // the lab test (lab/lab_registry.cpp): direct-shear | oedometer | triaxial
   GrainsSpec grains;
   MaterialSpec material;
   BoxSpec box;
@@ -116,6 +123,7 @@ struct DirectShearSpec {
   ConsolidationSpec consolidation;
   ShearSpec shear;
   OedometerSpec oedometer;
+  TriaxialSpec triaxial;
   NumericsSpec numerics;
   OutputSpec output;
   std::uint64_t seed = 1;

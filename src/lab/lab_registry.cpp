@@ -3,6 +3,7 @@
 #include "lab/direct_shear.h"
 #include "lab/lab_test.h"
 #include "lab/oedometer.h"
+#include "lab/triaxial.h"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -26,6 +27,7 @@ struct Entry {
 constexpr Entry kTests[] = {
     {"direct-shear", &make<DirectShearTest>},
     {"oedometer", &make<OedometerTest>},
+    {"triaxial", &make<TriaxialTest>},
 };
 
 }  // namespace

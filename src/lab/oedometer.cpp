@@ -68,19 +68,10 @@ OedometerSummary summarise_oedometer(const std::vector<std::vector<double>>& row
   return s;
 }
 
-DirectShearSpec OedometerTest::preparation_spec(const DirectShearSpec& spec) {
-  DirectShearSpec p = spec;
-  p.test = "direct-shear";
-  p.box.gap = 0;  // the halves' slabs meet: one rigid ring
-  return p;
-}
-
-OedometerTest::OedometerTest(const DirectShearSpec& spec) : spec_(spec), prep_(preparation_spec(spec)) {
-  prep_.end_after_consolidation();
-  World& w = prep_.world();
+OedometerTest::OedometerTest(const DirectShearSpec& spec) : ClosedBoxTest(spec) {
   // Runs after the preparation's servo, which is idle once it is done.
-  w.add_controller([this](World& world, double dt) {
-    if (p_.phase == OedometerPhase::Load) servo_.control(world, dt);
+  world().add_controller([this](World& w, double dt) {
+    if (p_.phase == OedometerPhase::Load) servo_.control(w, dt);
   });
 }
 
@@ -216,32 +207,12 @@ void OedometerTest::record_row() {
                              prep_.coordination_number(),
                              w.kinetic_energy(),
                              unbalanced_force_ratio(w)};
-  if (observer_) {
-    const std::vector<double> extra = observer_(*this);
-    if (extra.size() != observer_columns_.size())
-      throw RunError(fmt::format("sample observer gave {} values for {} columns", extra.size(),
-                                 observer_columns_.size()));
-    row.insert(row.end(), extra.begin(), extra.end());
-  }
+  observe(row);
   p_.rows.push_back(std::move(row));
 }
 
-std::vector<std::string> OedometerTest::series_columns() const {
-  std::vector<std::string> c = oedometer_series_columns();
-  c.insert(c.end(), observer_columns_.begin(), observer_columns_.end());
-  return c;
-}
-
-void OedometerTest::set_sample_observer(std::vector<std::string> columns, SampleObserver observer) {
-  observer_columns_ = std::move(columns);
-  observer_ = std::move(observer);
-}
-
 std::vector<SummaryValue> OedometerTest::summary() const {
-  std::vector<SummaryValue> v;
-  // The preparation's values (group "preparation") and the grain size.
-  for (const SummaryValue& s : prep_.summary())
-    if (s.group == "preparation" || s.key == "mean_equivalent_diameter_m") v.push_back(s);
+  std::vector<SummaryValue> v = preparation_summary();
   const OedometerSummary o = summarise_oedometer(p_.rows);
   v.push_back({"oedometer", "compression_index", o.compression_index});
   v.push_back({"oedometer", "swelling_index", o.swelling_index});
@@ -290,9 +261,7 @@ BandGeometry OedometerTest::band_geometry() const {
 
 std::vector<std::uint8_t> OedometerTest::save() const {
   ByteWriter b;
-  const std::vector<std::uint8_t> prep = prep_.save();
-  b.u64(prep.size());
-  b.raw(prep);
+  save_preparation(b);
   b.i32(static_cast<std::int32_t>(p_.phase));
   b.i32(p_.stage);
   p_.calm.save(b);
@@ -302,14 +271,13 @@ std::vector<std::uint8_t> OedometerTest::save() const {
   b.i64(p_.load_start_step), b.i64(p_.stage_start_step);
   b.u64(p_.rows.size());
   for (const auto& r : p_.rows) b.f64s(r);
-  b.u64(p_.reference.size());
-  for (const BodyState& body : p_.reference) b.vec(body.x), b.vec(body.v), b.vec(body.w), b.quat(body.q);
+  save_bodies(b, p_.reference);
   return std::move(b.bytes);
 }
 
 void OedometerTest::load(std::span<const std::uint8_t> bytes) {
   ByteReader r(bytes, "the oedometer protocol state", " Start the run again without --resume.");
-  prep_.load(r.raw(r.count(1)));
+  load_preparation(r);
   const std::int32_t phase = r.i32();
   if (phase < 0 || phase > static_cast<int>(OedometerPhase::Done)) r.corrupted("an unknown phase");
   p_.phase = static_cast<OedometerPhase>(phase);
@@ -323,8 +291,7 @@ void OedometerTest::load(std::span<const std::uint8_t> bytes) {
   p_.load_start_step = r.i64(), p_.stage_start_step = r.i64();
   p_.rows.resize(r.count(8));
   for (auto& row : p_.rows) row = r.f64s();
-  p_.reference.resize(r.count(13 * 8));
-  for (BodyState& body : p_.reference) body.x = r.vec(), body.v = r.vec(), body.w = r.vec(), body.q = r.quat();
+  p_.reference = load_bodies(r);
   r.expect_end();
 }
 

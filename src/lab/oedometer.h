@@ -2,12 +2,9 @@
 // of a specimen in a rigid square ring, frictionless or with
 // material.wall_friction, under a schedule of cap stresses.
 //
-// Box and preparation: the direct shear box of lab/shear_box.h with its gap
-// closed, so that its eight side slabs form one rigid ring of L x W; the
-// specimen is prepared by the direct shear protocol's first three phases
-// (deposit, compact, consolidate under consolidation.normal_stress: the same
-// preparation, density target and checks; lab/direct_shear.h), which ends
-// there instead of shearing.
+// Box and preparation (lab/closed_box_test.h): the direct shear box with its
+// gap closed, a rigid ring of L x W, and the direct shear protocol's deposit,
+// compact and consolidate phases under consolidation.normal_stress.
 //
 // Loading (phase "load"): the cap's servo (lab/stress_servo.h, integral
 // reset at each stage) holds each stress of oedometer.stresses in turn until
@@ -42,8 +39,7 @@
 //   contact network: n = 1/3; contacts that form under load raise it).
 #pragma once
 
-#include "lab/direct_shear.h"
-#include "lab/lab_test.h"
+#include "lab/closed_box_test.h"
 #include "lab/rest_criteria.h"
 #include "lab/stress_servo.h"
 
@@ -71,18 +67,12 @@ struct OedometerSummary {
 // From the series rows (oedometer_series_columns() order); zeros before two rows.
 OedometerSummary summarise_oedometer(const std::vector<std::vector<double>>& rows);
 
-class OedometerTest final : public LabTest {
+class OedometerTest final : public ClosedBoxTest {
  public:
   // Builds the preparation (the direct shear box with its gap closed).
   explicit OedometerTest(const DirectShearSpec& spec);
-  OedometerTest(const OedometerTest&) = delete;
-  OedometerTest& operator=(const OedometerTest&) = delete;
 
   // LabTest.
-  const DirectShearSpec& spec() const override { return spec_; }
-  World& world() override { return prep_.world(); }
-  const World& world() const override { return prep_.world(); }
-  double time_step() const override { return prep_.time_step(); }
   bool advance(int max_steps) override;
   int phase_index() const override;
   std::string phase_name() const override;
@@ -95,9 +85,7 @@ class OedometerTest final : public LabTest {
   std::string status_line() const override;
   std::string phase_note() const override;
   std::string result_line() const override;
-  std::vector<std::string> series_columns() const override;
   const std::vector<std::vector<double>>& series() const override { return p_.rows; }
-  void set_sample_observer(std::vector<std::string> columns, SampleObserver observer) override;
   const std::vector<BodyState>& reference() const override { return p_.reference; }
   std::vector<SummaryValue> summary() const override;
   double specimen_volume() const override;
@@ -116,8 +104,6 @@ class OedometerTest final : public LabTest {
   double lateral_stress() const;                       // Pa, mean of the four side walls
   double vertical_strain() const;                      // since stage 0 (0 before)
   double void_ratio() const { return prep_.void_ratio(); }
-  // The preparation (the direct shear protocol ending after consolidation).
-  const DirectShearTest& preparation() const { return prep_; }
 
  private:
   struct Progress {
@@ -132,7 +118,7 @@ class OedometerTest final : public LabTest {
     std::vector<BodyState> reference;  // grains at stage 0
   };
 
-  static DirectShearSpec preparation_spec(const DirectShearSpec& spec);
+  const std::vector<std::string>& own_columns() const override { return oedometer_series_columns(); }
   void start_loading();
   void start_stage(int stage);
   bool stage_at_rest();
@@ -140,12 +126,8 @@ class OedometerTest final : public LabTest {
   double area() const { return spec_.box.length * spec_.box.width; }
   double cap_height() const;
 
-  DirectShearSpec spec_;
-  DirectShearTest prep_;
   Progress p_;
   StressServo servo_{0, 0, 0, 0};  // set at each stage
-  std::vector<std::string> observer_columns_;
-  SampleObserver observer_;
 };
 
 }  // namespace grainlab

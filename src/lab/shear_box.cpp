@@ -5,13 +5,9 @@
 
 namespace grainlab {
 
-namespace {
-constexpr double kSlab = 2.5e-3;  // m, thickness of the box slabs
-}  // namespace
-
 void build_shear_box(World& w, const BoxSpec& box, double fill_top, Index material) {
   const double L = box.length, W = box.width, H = box.height, gap = box.gap;
-  const double t = kSlab;
+  const double t = kShearBoxSlab;
   w.add_plane(Vec3::Zero(), Vec3::UnitZ(), material, "floor");
   const double lower_top = 0.5 * H - 0.5 * gap, upper_bottom = 0.5 * H + 0.5 * gap;
   const double top = fill_top + t;

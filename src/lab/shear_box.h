@@ -13,6 +13,8 @@
 
 namespace grainlab {
 
+inline constexpr double kShearBoxSlab = 2.5e-3;  // m, t: thickness of the side slabs
+
 // Walls by role, in the order build_shear_box adds them (World wall indices
 // when the box is built into an empty World).
 enum ShearBoxWall : Index { Floor = 0, LowerXm, LowerXp, LowerYm, LowerYp, UpperXm, UpperXp, UpperYm, UpperYp, Cap, ShearBoxWallCount };

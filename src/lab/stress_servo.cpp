@@ -6,22 +6,23 @@
 namespace grainlab {
 
 void StressServo::control(World& w, double dt) {
-  WallState& cap = w.state.walls[wall_];
-  double k_cap = 0;
+  const auto ours = [&](Index wall) { return wall == walls_[0] || (count_ == 2 && wall == walls_[1]); };
+  double k_walls = 0;
   for (const Contact& c : w.state.wall_contacts)
-    if (c.a == wall_ && in_contact(c) && c.geo.depth > 0)
-      k_cap += w.model.law->tangent_stiffness(c.normal_force, c.geo.depth);
-  if (k_cap <= 0) {
-    cap.v.z() = -speed_limit_;  // not touching yet: come down
+    if (ours(c.a) && in_contact(c) && c.geo.depth > 0)
+      k_walls += w.model.law->tangent_stiffness(c.normal_force, c.geo.depth);
+  double outward_speed = -speed_limit_;  // not touching yet: come in at the limit
+  if (k_walls > 0) {
+    const double gain = kAlpha * area_ / (k_walls * dt);
+    const double error = stress(w) - target_;
+    const double v = gain * (error + integral_);
+    outward_speed = std::clamp(v, -speed_limit_, speed_limit_);
+    // Integral action only while the walls are free to follow (no wind-up at the clamp).
+    if (outward_speed == v) integral_ += kBeta * error;
+  } else {
     integral_ = 0;
-    return;
   }
-  const double gain = kAlpha * area_ / (k_cap * dt);
-  const double error = stress(w) - target_;
-  const double v = gain * (error + integral_);
-  cap.v.z() = std::clamp(v, -speed_limit_, speed_limit_);
-  // Integral action only while the wall is free to follow (no wind-up at the clamp).
-  if (cap.v.z() == v) integral_ += kBeta * error;
+  for (int i = 0; i < count_; ++i) w.state.walls[walls_[i]].v[axis_] = -inward_ * outward_speed;
 }
 
 }  // namespace grainlab

@@ -1,7 +1,9 @@
-// A stress servo: a proportional-integral controller that moves one plane
-// wall along its normal (here z) until the stress it carries is the target.
+// A stress servo: a proportional-integral controller that moves a wall (or a
+// group of walls moving as one: the two slabs of one side of the box) along
+// one axis until the stress they carry is the target. The cap moves along z
+// and pushes down (inward -z); a side wall along x or y.
 //
-// v_z = G (e + I), e = sigma - sigma_target, I <- I + beta e each step, with
+// v_out = G (e + I) along the outward axis, e = sigma - sigma_target, I <- I + beta e each step, with
 // G = alpha A / (k_w dt), where A is the loaded area and k_w the summed
 // tangent stiffness d f / d delta of the wall's contacts, as the contact law
 // gives it (ContactLaw::tangent_stiffness: 1.5 f / delta for Hertz, f / delta
@@ -16,6 +18,8 @@
 // it is). While the wall touches nothing it comes down at the limit.
 #pragma once
 
+#include <array>
+
 #include "core/bytes.h"
 #include "dynamics/world.h"
 
@@ -23,18 +27,30 @@ namespace grainlab {
 
 class StressServo {
  public:
-  // Drives wall `wall` (its force.z / area is the stress, compressive
+  // Drives cap wall `wall` (its force.z / area is the stress, compressive
   // positive for a downward-facing cap) towards target (Pa), at most
   // speed_limit (m/s).
   StressServo(Index wall, double area, double target, double speed_limit)
-      : wall_(wall), area_(area), target_(target), speed_limit_(speed_limit) {}
+      : StressServo({wall, wall}, 1, 2, -1.0, area, target, speed_limit) {}
+  // Drives the first `count` (1 or 2) of `walls` as one along `axis` (0, 1,
+  // 2), pushing the specimen towards `inward` (+1 or -1) on that axis.
+  StressServo(std::array<Index, 2> walls, int count, int axis, double inward, double area, double target,
+              double speed_limit)
+      : walls_(walls), count_(count), axis_(axis), inward_(inward), area_(area), target_(target),
+        speed_limit_(speed_limit) {}
 
-  // One control step: sets the wall's z velocity from the forces of this step.
+  // One control step: sets the walls' velocity along the axis from the forces of this step.
   void control(World& w, double dt);
   // The target stress (Pa).
   double target() const { return target_; }
-  // The stress the wall carries now (Pa).
-  double stress(const World& w) const { return w.state.walls[wall_].force.z() / area_; }
+  // The stress the walls carry now (Pa): compressive positive.
+  double stress(const World& w) const {
+    double f = 0;
+    for (int i = 0; i < count_; ++i) f -= inward_ * w.state.walls[walls_[i]].force[axis_];
+    return f / area_;
+  }
+  // The loaded area changes with the specimen (a side wall: its width times the height).
+  void set_area(double area) { area_ = area; }
   // The integral term (Pa).
   double integral() const { return integral_; }
 
@@ -46,7 +62,9 @@ class StressServo {
   static constexpr double kBeta = 0.005;  // per step: integral time 200 steps (beta = alpha / 10)
 
  private:
-  Index wall_;
+  std::array<Index, 2> walls_;
+  int count_, axis_;
+  double inward_;
   double area_, target_, speed_limit_;
   double integral_ = 0;  // Pa
 };

@@ -62,7 +62,10 @@ TEST(Config, OedometerDefaultsHaveTheScheduleAndNotTheShear) {
   const DirectShearSpec s = parse_config(text, "oedometer.toml");
   EXPECT_EQ(s.test, "oedometer");
   EXPECT_EQ(s.output.folder, "runs/oedometer");
-  EXPECT_THROW(default_config_toml("triaxial"), InputError);
+  EXPECT_THROW(default_config_toml("simple-shear"), InputError);
+  const std::string tx = default_config_toml("triaxial");
+  EXPECT_TRUE(has(tx, "\n[triaxial]\nfinal_strain = 0.15"));
+  EXPECT_FALSE(has(tx, "\n[oedometer]\n"));
 }
 
 TEST(Config, OedometerScheduleIsAListOfPositiveStresses) {
@@ -80,16 +83,20 @@ TEST(Config, OedometerScheduleIsAListOfPositiveStresses) {
   EXPECT_TRUE(has(msg, "expects a list of numbers")) << msg;
   msg = parse_error("[oedometer]\nstresses = [1e5, nan]\n");
   EXPECT_TRUE(has(msg, "a list of finite numbers")) << msg;
-  msg = parse_error("test = \"triaxial\"\n");
-  EXPECT_TRUE(has(msg, "test = \"triaxial\" is impossible")) << msg;
-  EXPECT_TRUE(has(msg, "\"direct-shear\", \"oedometer\"")) << msg;
+  msg = parse_error("test = \"simple-shear\"\n");
+  EXPECT_TRUE(has(msg, "test = \"simple-shear\" is impossible")) << msg;
+  EXPECT_TRUE(has(msg, "\"direct-shear\", \"oedometer\", \"triaxial\"")) << msg;
+  msg = parse_error("test = \"triaxial\"\n[triaxial]\nfinal_strain = 0.6\n");
+  EXPECT_TRUE(has(msg, "triaxial.final_strain = 0.6 is impossible")) << msg;
+  msg = parse_error("test = \"triaxial\"\n[triaxial]\nfinal_strain = 0.01\n[output]\nstrain_interval = 0.02\n");
+  EXPECT_TRUE(has(msg, "at most triaxial.final_strain = 0.01")) << msg;
 }
 
 TEST(Config, EmptyFileGivesTheDefaults) { expect_same_spec(parse_config("", "empty.toml"), DirectShearSpec{}); }
 
 TEST(Config, ToTomlRoundTripsEveryField) {
   const DirectShearSpec s = test::all_fields_changed();
-  ASSERT_EQ(config_differences(s, DirectShearSpec{}).size(), 49u) << "a field was left at its default";
+  ASSERT_EQ(config_differences(s, DirectShearSpec{}).size(), 50u) << "a field was left at its default";
   const DirectShearSpec back = parse_config(to_toml(s), "roundtrip.toml");
   expect_same_spec(back, s);
   EXPECT_TRUE(config_differences(back, s).empty());
@@ -331,7 +338,7 @@ TEST(Config, SpecToJsonHasTheConfigKeys) {
   EXPECT_EQ(j["output"]["folder"].get<std::string>(), s.output.folder);
   EXPECT_EQ(j["test"].get<std::string>(), "oedometer");
   EXPECT_EQ(j["oedometer"]["stresses"].get<std::vector<double>>(), s.oedometer.stresses);
-  EXPECT_EQ(j.size(), 11u);  // test, seed and nine tables
+  EXPECT_EQ(j.size(), 12u);  // test, seed and ten tables
 
   test::IoTempDir dir;
   write_json_file(dir.path / "run.json", j);

@@ -50,6 +50,7 @@ std::string error_of(const std::function<void()>& f) {
 inline void expect_same_spec(const DirectShearSpec& a, const DirectShearSpec& b) {
   EXPECT_EQ(a.test, b.test);
   EXPECT_EQ(a.oedometer.stresses, b.oedometer.stresses);
+  EXPECT_EQ(a.triaxial.final_strain, b.triaxial.final_strain);
   EXPECT_EQ(a.grains.preset, b.grains.preset);
   EXPECT_EQ(a.grains.folder, b.grains.folder);
   EXPECT_EQ(a.grains.shapes, b.grains.shapes);
@@ -102,6 +103,7 @@ inline DirectShearSpec all_fields_changed() {
   s.seed = 987654321987ull;
   s.test = "oedometer";
   s.oedometer.stresses = {25e3, 1.0 / 3.0 * 1e5, 8e5};
+  s.triaxial.final_strain = 0.3;
   s.grains = {"angular", "/tmp", 7, 321, 0.5e-3 + 1e-19, 0.9e-3};
   s.material.preset = "ottawa";  // the explicit values below override it
   s.material.law = contact_law<HertzUserLaw>();

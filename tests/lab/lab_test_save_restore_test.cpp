@@ -62,15 +62,7 @@ TEST(LabTestSaveRestore, MidShear) {
 TEST(LabTestSaveRestore, OedometerMidStageAfterARow) {
   // The servo of the second stage, its calm counter and window, the stage rows.
   // Spheres (cheap): the protocol is the same for any grain.
-  DirectShearSpec spec = testing_support::sphere_spec();
-  spec.test = "oedometer";
-  spec.specimen.void_ratio = 0.80;
-  spec.specimen.tolerance = 0.1;
-  spec.specimen.deposition_friction = 0.05;
-  // At the default 100 kPa this box's compaction never comes to rest: one
-  // bead spins at 785 rad/s about the normal of its one frictional contact
-  // (a point contact has no twisting resistance; rest_criteria.h).
-  spec.consolidation.normal_stress = 50e3;
+  DirectShearSpec spec = testing_support::loose_bead_spec("oedometer");
   spec.oedometer.stresses = {200e3, 400e3};
   save_restore_continue(
       spec,
@@ -78,12 +70,23 @@ TEST(LabTestSaveRestore, OedometerMidStageAfterARow) {
       600);
 }
 
+TEST(LabTestSaveRestore, TriaxialMidShear) {
+  // The four side servos and the cap's speed, the side stress sums, the rows.
+  DirectShearSpec spec = testing_support::loose_bead_spec("triaxial");
+  spec.triaxial.final_strain = 0.02;
+  spec.output.strain_interval = 0.002;
+  save_restore_continue(
+      spec, [](const LabTest& t) { return t.loading() && t.series().size() >= 2 && t.world().state.step % 7 != 0; },
+      600);
+}
+
 TEST(LabTestSaveRestore, RegistryMakesByNameAndRefusesUnknownNames) {
   const DirectShearSpec spec = testing_support::tiny_box_spec();
   EXPECT_EQ(make_lab_test("direct-shear", spec)->phase_name(), "deposit");
   EXPECT_EQ(make_lab_test("oedometer", spec)->phase_name(), "deposit");
-  EXPECT_THROW(make_lab_test("triaxial", spec), InputError);
-  EXPECT_EQ(lab_test_names(), (std::vector<std::string>{"direct-shear", "oedometer"}));
+  EXPECT_EQ(make_lab_test("triaxial", spec)->phase_name(), "deposit");
+  EXPECT_THROW(make_lab_test("simple-shear", spec), InputError);
+  EXPECT_EQ(lab_test_names(), (std::vector<std::string>{"direct-shear", "oedometer", "triaxial"}));
 }
 
 TEST(LabTestSaveRestore, TruncatedProtocolBytesAreRefused) {

@@ -25,13 +25,8 @@ std::vector<double> row(double target, double stress, double k0, double strain, 
 // 240 beads in a 6 d_max box (5 x 5 x 4.2 mm), loose (e about 0.82 with the
 // walls), consolidated at 50 kPa, then the schedule.
 DirectShearSpec bead_oedometer(std::vector<double> stresses, double wall_friction = 0) {
-  DirectShearSpec s = testing_support::sphere_spec();
-  s.test = "oedometer";
+  DirectShearSpec s = testing_support::loose_bead_spec("oedometer");
   s.material.wall_friction = wall_friction;
-  s.specimen.void_ratio = 0.80;
-  s.specimen.tolerance = 0.1;
-  s.specimen.deposition_friction = 0.05;
-  s.consolidation.normal_stress = 50e3;
   s.oedometer.stresses = std::move(stresses);
   return s;
 }

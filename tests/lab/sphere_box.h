@@ -20,6 +20,20 @@ inline DirectShearSpec sphere_spec(double diameters = 6) {
   return s;
 }
 
+// Loose beads for the oedometer and triaxial tests: a whole-specimen e about
+// 0.80 (the walls loosen a 6 d box), consolidated at 50 kPa (at 100 kPa one
+// seed's compaction never comes to rest: a bead spins at 785 rad/s about the
+// normal of its one frictional contact, which a point contact cannot stop).
+inline DirectShearSpec loose_bead_spec(const char* test) {
+  DirectShearSpec s = sphere_spec();
+  s.test = test;
+  s.specimen.void_ratio = 0.80;
+  s.specimen.tolerance = 0.1;
+  s.specimen.deposition_friction = 0.05;
+  s.consolidation.normal_stress = 50e3;
+  return s;
+}
+
 // The index box of the sphere tests: 6 d_max square, 6 high (the command's
 // default is 10 x 8; 6 keeps the tests in seconds, and the bulk measure
 // stays 1.5 diameters from the walls).
