@@ -1,4 +1,4 @@
-// `grainlab run FILE`: a direct shear test from a TOML config, with progress,
+// `grainlab run FILE`: a lab test (direct shear, oedometer, triaxial) from a TOML config, with progress,
 // series.csv (with the analysis columns of io/shear_analysis.h) and run.json,
 // ParaView snapshots in paraview/ during shear, the final analysis files in
 // analysis/, checkpoints on an interval and on SIGINT/SIGTERM, --resume, and
@@ -213,7 +213,8 @@ Command add_run_command(CLI::App& app) {
       "run",
       "run a virtual lab test from a TOML config: prepare a specimen at the target density, "
       "consolidate under the servo-held normal stress, then shear it to the final strain (test = "
-      "\"direct-shear\") or hold each stress of a loading schedule in a rigid ring (test = \"oedometer\"). "
+      "\"direct-shear\"), hold each stress of a loading schedule in a rigid ring (test = \"oedometer\"), or "
+      "compress it axially between walls servo-held at the cell pressure (test = \"triaxial\"). "
       "Writes series.csv "
       "(one row per strain interval, SI units, with rotation, coordination, fabric and shear-band columns), "
       "run.json (inputs, achieved density, peaks, Love-Weber stress), checkpoint.bin, analysis/ (final "
@@ -223,7 +224,7 @@ Command add_run_command(CLI::App& app) {
   cmd->add_flag("--print-defaults", o->print_defaults, "print a complete, commented default config and exit");
   cmd->add_flag("--default", o->use_defaults, "run the embedded default (a small box of sub-angular grains)");
   cmd->add_option("--test", o->test,
-                  "the test of --default and --print-defaults: direct-shear (the default) or oedometer")
+                  "the test of --default and --print-defaults: direct-shear (the default), oedometer or triaxial")
       ->check(CLI::IsMember(lab_test_names()));
   cmd->add_flag("--resume", o->resume, "continue from output.folder/checkpoint.bin (same config)");
   cmd->add_flag("--quiet", o->quiet, "no progress lines");
