@@ -50,19 +50,19 @@ TEST(Triaxial, SummaryOfKnownCurves) {
 }
 
 TEST(Triaxial, BeadsHoldTheCellPressureAndTheIdentities) {
-  // 240 beads, 6 d_max square, loose (e 0.80), sigma_3 50 kPa, to 6 % axial
-  // strain. Measured (seed 3): side stress error of the interval means 0.0068
-  // on average over the samples and 0.030 at worst (material glass-beads
-  // preset, to 12 %: 0.010 and 0.034).
+  // 240 beads, 6 d_max square, loose (e 0.80), sigma_3 50 kPa, to 4 % axial
+  // strain. Measured (seed 3): side stress error of the interval means 0.0077
+  // on average over the samples and 0.030 at worst (to 6 %: 0.0068 and 0.030;
+  // the material glass-beads preset to 12 %: 0.010 and 0.034).
   DirectShearSpec spec = testing_support::loose_bead_spec("triaxial");
-  spec.triaxial.final_strain = 0.06;
+  spec.triaxial.final_strain = 0.04;
   spec.output.strain_interval = 0.002;
   TriaxialTest t(spec);
   while (t.advance(1000)) {
   }
   ASSERT_TRUE(t.done());
   const auto& rows = t.series();
-  ASSERT_GE(rows.size(), 30u);
+  ASSERT_GE(rows.size(), 20u);
   // The isotropic state: all five walls at sigma_3 within the tolerance.
   EXPECT_NEAR(rows[0][3] / 50e3, 1.0, 0.01);
   EXPECT_NEAR(rows[0][4] / 50e3, 1.0, 0.01);
