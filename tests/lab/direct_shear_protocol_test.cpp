@@ -72,21 +72,23 @@ constexpr int kStrain = 1, kDh = 2, kDv = 3, kF = 4, kN = 5, kSigma = 6, kRatio 
 
 }  // namespace
 
-TEST(DirectShearProtocol, PreparationReachesTheTargetDensity) {
-  const TinyRun& r = tiny_run();
+namespace {
+
+// The four claims on the one tiny run: one test (ctest runs each test in its
+// own process, so four tests would run the protocol four times, about 30 s
+// each), a SCOPED_TRACE naming each claim.
+void preparation_reaches_the_target_density(const TinyRun& r) {
   EXPECT_NEAR(r.test.achieved_void_ratio(), r.spec.target_void_ratio(), r.spec.specimen.tolerance);
   const auto& s = r.spec.specimen;
   EXPECT_NEAR(r.test.achieved_relative_density(), (s.e_max - r.test.achieved_void_ratio()) / (s.e_max - s.e_min),
               1e-12);
 }
 
-TEST(DirectShearProtocol, ConsolidationHoldsTheNormalStressWithinOnePercent) {
-  const TinyRun& r = tiny_run();
+void consolidation_holds_the_normal_stress_within_one_percent(const TinyRun& r) {
   EXPECT_NEAR(r.consolidated_stress / r.spec.consolidation.normal_stress, 1.0, 0.01);
 }
 
-TEST(DirectShearProtocol, CapHoldsTheNormalStressWithinThreePercentDuringShear) {
-  const TinyRun& r = tiny_run();
+void cap_holds_the_normal_stress_within_three_percent_during_shear(const TinyRun& r) {
   // The record (every sample) within 3 %; single steps of a box with about
   // ten grains under the cap spike further as chains buckle. Measured on two
   // trajectories (the bits of an AVX-512 and of an AVX2 build): worst sample
@@ -98,8 +100,7 @@ TEST(DirectShearProtocol, CapHoldsTheNormalStressWithinThreePercentDuringShear) 
     EXPECT_NEAR(row[kSigma] / r.spec.consolidation.normal_stress, 1.0, 0.03) << "at strain " << row[kStrain];
 }
 
-TEST(DirectShearProtocol, SeriesIsConsistentWithTheWalls) {
-  const TinyRun& r = tiny_run();
+void series_is_consistent_with_the_walls(const TinyRun& r) {
   const auto& rows = r.test.series();
   ASSERT_GE(rows.size(), 15u);  // 2 % strain sampled every 0.1 %
   const double L = r.spec.box.length, A = L * r.spec.box.width;
@@ -131,6 +132,28 @@ TEST(DirectShearProtocol, SeriesIsConsistentWithTheWalls) {
   double peak = 0;
   for (const auto& row : rows) peak = std::max(peak, row[kRatio]);
   EXPECT_GT(peak, 0.3);
+}
+
+}  // namespace
+
+TEST(DirectShearProtocol, TinyRunPreparesConsolidatesShearsAndBalances) {
+  const TinyRun& r = tiny_run();
+  {
+    SCOPED_TRACE("the preparation reaches the target density");
+    preparation_reaches_the_target_density(r);
+  }
+  {
+    SCOPED_TRACE("consolidation holds the normal stress within 1 %");
+    consolidation_holds_the_normal_stress_within_one_percent(r);
+  }
+  {
+    SCOPED_TRACE("the cap holds the normal stress within 3 % during shear");
+    cap_holds_the_normal_stress_within_three_percent_during_shear(r);
+  }
+  {
+    SCOPED_TRACE("the series is consistent with the walls");
+    series_is_consistent_with_the_walls(r);
+  }
 }
 
 TEST(DirectShearProtocol, UnreachableTargetStopsWithAMessage) {
