@@ -55,10 +55,12 @@ OedometerSummary summarise_oedometer(const std::vector<std::vector<double>>& row
   std::size_t low = top;
   for (std::size_t i = top + 1; i < rows.size() && rows[i][Target] < rows[i - 1][Target]; ++i) low = i;
   if (low > top) s.swelling_index = index(top, low);
-  // n of M ~ sigma^n: least squares of log M on the log mean stress of each loading increment.
+  // n of M ~ sigma^n: least squares of log M on the log mean stress of each
+  // loading increment but the first, which starts from the preparation's
+  // stress state (K0 0.73-0.90 after consolidation) and rearranges it.
   double sx = 0, sy = 0, sxx = 0, sxy = 0;
   int n = 0;
-  for (std::size_t i = 1; i <= last_load; ++i) {
+  for (std::size_t i = 2; i <= last_load; ++i) {
     const double m = rows[i][Modulus];
     if (!(m > 0)) continue;
     const double x = std::log(0.5 * (rows[i][Vertical] + rows[i - 1][Vertical])), y = std::log(m);

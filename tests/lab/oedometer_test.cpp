@@ -107,10 +107,9 @@ TEST(Oedometer, FrictionlessRingOfBeads) {
   EXPECT_GT(o.swelling_index, 0);
   EXPECT_LT(o.swelling_index, o.compression_index);
   // Hertz spheres: M ~ s^n with n = 1/3 for a fixed contact network
-  // (effective-medium theory); this small specimen measures 0.30-0.41 (three
-  // seeds and boxes, docs/oedometer.md), so the bound is 1/3 less a
-  // specimen's scatter, up to 2/3.
-  EXPECT_GT(o.modulus_stress_exponent, 0.25);
+  // (effective-medium theory), more as contacts form under load. Fitted
+  // from the second increment on (oedometer.h), measured 0.37 here.
+  EXPECT_GT(o.modulus_stress_exponent, 1.0 / 3.0);
   EXPECT_LT(o.modulus_stress_exponent, 2.0 / 3.0);
 }
 
