@@ -31,7 +31,7 @@ struct Checkpoint {
 // Current checkpoint format version; files of another version are refused.
 // 2: candidate pairs (warm-start caches) and contacts (a, b, sub-contact) stored apart;
 //    protocol bytes through core/bytes.h, no Model fields.
-inline constexpr std::uint32_t kCheckpointVersion = 4;  // 3: contacts carry gain and twist; 4: pairs carry their GJK simplex
+inline constexpr std::uint32_t kCheckpointVersion = 5;  // 3: contacts carry gain and twist; 4: pairs carry their GJK simplex; 5: the oedometer keeps its last row's stress
 
 // Writes a checkpoint atomically (RunError on failure).
 void save_checkpoint(const std::filesystem::path& path, const State& state, std::span<const std::uint8_t> protocol,

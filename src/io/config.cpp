@@ -84,7 +84,8 @@ const std::array kFields{
     GL_FIELD("shear", "speed", shear.speed, "m/s of the upper half; 0 = from numerics.inertial_number"),
     GL_FIELD("shear", "final_strain", shear.final_strain, "shear strain d_h / L at which the test ends, in (0, 1]"),
 
-    GL_FIELD("oedometer", "stresses", oedometer.stresses, "Pa, the cap's stresses after consolidation, each held to rest, in order; one below the one before unloads"),
+    GL_FIELD("oedometer", "stresses", oedometer.stresses, "Pa, the cap's stresses after consolidation, in order; one below the one before unloads"),
+    GL_FIELD("oedometer", "loading", oedometer.loading, "\"stages\": each stress held to rest (incremental loading, ASTM D2435) | \"constant-rate\": the cap moves at a constant strain rate from numerics.inertial_number to each stress (ASTM D4186)"),
 
     GL_FIELD("triaxial", "final_strain", triaxial.final_strain, "axial strain (H_0 - H)/H_0 at which the test ends, in (0, 0.5]"),
 
@@ -418,6 +419,9 @@ void validate_spec(const DirectShearSpec& spec_in, const std::string& source, co
   if (stresses.empty() || *std::min_element(stresses.begin(), stresses.end()) <= 0)
     impossible(source, lines, "oedometer.stresses", toml_value(&spec.oedometer.stresses),
                "a list of at least one stress > 0 (Pa; e.g. [200e3, 400e3, 800e3, 200e3])");
+
+  need_s(spec.oedometer.loading == "stages" || spec.oedometer.loading == "constant-rate", "oedometer.loading",
+         spec.oedometer.loading, "\"stages\" or \"constant-rate\"");
 
   need(spec.triaxial.final_strain > 0 && spec.triaxial.final_strain <= 0.5, "triaxial.final_strain",
        spec.triaxial.final_strain, "in (0, 0.5] (axial strain: 15 % is 0.15)");

@@ -83,11 +83,14 @@ struct ShearSpec {
 };
 
 // The oedometer (lab/oedometer.h): after consolidation under
-// consolidation.normal_stress, the cap's servo holds each stress of the
-// schedule in turn until the specimen is at rest (a stress below the one
-// before unloads).
+// consolidation.normal_stress, the cap goes through the schedule of
+// stresses in order (a stress below the one before unloads): with loading
+// "stages" its servo holds each stress until the specimen is at rest; with
+// "constant-rate" it moves at a constant speed (from numerics.inertial_number)
+// until the cap stress reaches each stress, and reverses to unload.
 struct OedometerSpec {
   std::vector<double> stresses = {200e3, 400e3, 800e3, 400e3, 200e3, 100e3};  // Pa, in order
+  std::string loading = "stages";  // "stages" | "constant-rate"
 };
 
 // The drained triaxial test (lab/triaxial.h): isotropic consolidation at

@@ -28,9 +28,17 @@ const std::vector<std::string>& oedometer_series_columns() {
   return columns;
 }
 
-OedometerSummary summarise_oedometer(const std::vector<std::vector<double>>& rows) {
+OedometerSummary summarise_oedometer(const std::vector<std::vector<double>>& all_rows) {
   OedometerSummary s;
   s.swelling_index = s.modulus_stress_exponent = kNaN;
+  // Each stage's last row (a constant-rate run records several per stage),
+  // with M recomputed between them.
+  std::vector<std::vector<double>> rows;
+  for (std::size_t i = 0; i < all_rows.size(); ++i)
+    if (i + 1 == all_rows.size() || all_rows[i + 1][Stage] != all_rows[i][Stage]) rows.push_back(all_rows[i]);
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    rows[i][Modulus] = i == 0 ? kNaN
+                              : (rows[i][Vertical] - rows[i - 1][Vertical]) / (rows[i][Strain] - rows[i - 1][Strain]);
   if (rows.size() < 2) return s;
   s.final_void_ratio = rows.back()[VoidRatio];
   // The largest stress and the loading increments before it (each above the last).
@@ -73,7 +81,7 @@ OedometerSummary summarise_oedometer(const std::vector<std::vector<double>>& row
 OedometerTest::OedometerTest(const DirectShearSpec& spec) : ClosedBoxTest(spec) {
   // Runs after the preparation's servo, which is idle once it is done.
   world().add_controller([this](World& w, double dt) {
-    if (p_.phase == OedometerPhase::Load) servo_.control(w, dt);
+    if (p_.phase == OedometerPhase::Load && !constant_rate()) servo_.control(w, dt);
   });
 }
 
@@ -130,6 +138,7 @@ void OedometerTest::start_loading() {
   p_.load_start_step = world().state.step;
   p_.height_at_load = cap_height();
   p_.reference = world().state.bodies;
+  set_cap_speed();
   p_.stage = 0;
   record_row();  // the consolidated specimen
   start_stage(1);
@@ -140,8 +149,53 @@ void OedometerTest::start_stage(int stage) {
   p_.stage_start_step = world().state.step;
   p_.calm.reset();
   p_.window.reset();
-  const double d = prep_.mean_diameter();
-  servo_ = StressServo(Cap, area(), stage_stress(stage), 2e-4 * d / time_step());
+  servo_ = stage_servo(stage);
+  if (constant_rate()) {  // down to load, up to unload
+    const bool unload = stage_stress(stage) < stage_stress(stage - 1);
+    world().state.walls[Cap].v = Vec3(0, 0, unload ? cap_speed_ : -cap_speed_);
+  }
+}
+
+StressServo OedometerTest::stage_servo(int stage) const {
+  // At most the constant-rate speed: each stage is loaded quasi-statically.
+  return StressServo(Cap, area(), stage_stress(stage), cap_speed_);
+}
+
+void OedometerTest::set_cap_speed() {
+  // I = (v / H_0) d sqrt(rho S / sigma_0) at the consolidation stress sigma_0.
+  const double rho = spec_.material.grain.density * world().model.density_scale;
+  cap_speed_ = spec_.numerics.inertial_number * p_.height_at_load /
+               (prep_.mean_diameter() * std::sqrt(rho / stage_stress(0)));
+}
+
+bool OedometerTest::stage_reached() const {
+  const double target = stage_stress(p_.stage);
+  return stage_stress(p_.stage) < stage_stress(p_.stage - 1) ? vertical_stress() <= target
+                                                              : vertical_stress() >= target;
+}
+
+bool OedometerTest::advance_constant_rate(int max_steps) {
+  World& w = world();
+  constexpr double kRowFactor = 1.0471285480508996;  // 10^(1/50): 50 rows per decade of stress
+  for (int i = 0; i < max_steps; ++i) {
+    w.step(time_step());
+    if (stage_reached()) {
+      record_row();
+      if (p_.stage == stages()) {
+        w.state.walls[Cap].v.setZero();
+        p_.phase = OedometerPhase::Done;
+        return false;
+      }
+      start_stage(p_.stage + 1);
+      return true;
+    }
+    const double sv = vertical_stress();
+    if (sv > 0 && (sv >= kRowFactor * p_.last_row_stress || sv * kRowFactor <= p_.last_row_stress)) {
+      record_row();
+      return true;
+    }
+  }
+  return true;
 }
 
 bool OedometerTest::stage_at_rest() {
@@ -170,6 +224,7 @@ bool OedometerTest::advance(int max_steps) {
     if (!prep_.advance(max_steps)) start_loading();
     return true;  // a preparation phase ended, or the steps are done
   }
+  if (constant_rate()) return advance_constant_rate(max_steps);
   World& w = world();
   for (int i = 0; i < max_steps; ++i) {
     w.step(time_step());
@@ -211,6 +266,7 @@ void OedometerTest::record_row() {
                              unbalanced_force_ratio(w)};
   observe(row);
   p_.rows.push_back(std::move(row));
+  p_.last_row_stress = sv;
 }
 
 std::vector<SummaryValue> OedometerTest::summary() const {
@@ -237,8 +293,10 @@ std::string OedometerTest::status_line() const {
 std::string OedometerTest::phase_note() const {
   if (p_.phase == OedometerPhase::Prepare) return prep_.phase_note();
   if (p_.phase != OedometerPhase::Load || p_.rows.empty()) return "";
-  return fmt::format("consolidated under {:.0f} kPa: e = {:.4f}, K0 = {:.3f}; now {} stages, each held to rest",
-                     stage_stress(0) * 1e-3, p_.rows.front()[VoidRatio], p_.rows.front()[K0], stages());
+  const std::string how = constant_rate() ? fmt::format("at a constant cap speed of {:.3g} mm/s", cap_speed_ * 1e3)
+                                           : std::string("each held to rest");
+  return fmt::format("consolidated under {:.0f} kPa: e = {:.4f}, K0 = {:.3f}; now {} stages, {}",
+                     stage_stress(0) * 1e-3, p_.rows.front()[VoidRatio], p_.rows.front()[K0], stages(), how);
 }
 
 std::string OedometerTest::result_line() const {
@@ -266,10 +324,10 @@ std::vector<std::uint8_t> OedometerTest::save() const {
   save_preparation(b);
   b.i32(static_cast<std::int32_t>(p_.phase));
   b.i32(p_.stage);
+  b.f64(p_.height_at_load), b.f64(p_.last_row_stress);
   p_.calm.save(b);
   p_.window.save(b);
   servo_.save(b);
-  b.f64(p_.height_at_load);
   b.i64(p_.load_start_step), b.i64(p_.stage_start_step);
   b.u64(p_.rows.size());
   for (const auto& r : p_.rows) b.f64s(r);
@@ -285,11 +343,12 @@ void OedometerTest::load(std::span<const std::uint8_t> bytes) {
   p_.phase = static_cast<OedometerPhase>(phase);
   p_.stage = r.i32();
   if (p_.stage < 0 || p_.stage > stages()) r.corrupted("a stage outside the schedule");
-  if (p_.phase == OedometerPhase::Load) start_stage(p_.stage);  // the servo's target; the counters next
+  p_.height_at_load = r.f64(), p_.last_row_stress = r.f64();
+  if (p_.phase != OedometerPhase::Prepare) set_cap_speed();  // the cap's velocity is the world's, restored
+  if (p_.phase == OedometerPhase::Load) servo_ = stage_servo(p_.stage);  // its target; its integral next
   p_.calm.load(r);
   p_.window.load(r);
   servo_.load(r);
-  p_.height_at_load = r.f64();
   p_.load_start_step = r.i64(), p_.stage_start_step = r.i64();
   p_.rows.resize(r.count(8));
   for (auto& row : p_.rows) row = r.f64s();

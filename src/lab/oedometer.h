@@ -16,6 +16,16 @@
 // before unloads. One series row is recorded at rest at the end of every
 // stage, the consolidated state first (stage 0).
 //
+// Constant rate of strain (oedometer.loading = "constant-rate", ASTM D4186
+// in spirit): the cap moves at the constant speed v = I H_0 / (d
+// sqrt(rho S / sigma_0)) (I = numerics.inertial_number, sigma_0 the
+// consolidation stress: I falls as the stress grows), downwards until the
+// cap stress reaches the stage's stress, upwards (unloading) until it falls
+// to it; no servo, no rest. A row every time sigma_v has changed by a factor
+// 10^(1/50) since the last (50 rows per decade of stress) and one when each
+// stage's stress is reached; the column "stage" is the stage being
+// approached, so each stage's last row is where its stress was reached.
+//
 // Measured (SI, compression positive):
 //   sigma_v  = N_cap / (L W), the cap's stress (the servo's);
 //   sigma_f  = N_floor / (L W): below sigma_v by the side walls' friction;
@@ -26,7 +36,9 @@
 //   e        = (L W H - V_s) / V_s;
 //   M        = (sigma_v,i - sigma_v,i-1) / (eps_v,i - eps_v,i-1), the
 //              constrained (oedometric) modulus of stage i's increment.
-// Summary (oedometer_summary):
+// Summary (oedometer_summary), over each stage's last row (with stages, the
+// one row of each stage; at a constant rate, where the stress was reached),
+// M recomputed between those rows:
 //   Cc = -(e_i - e_{i-1}) / log10(sigma_i / sigma_{i-1}) of the last loading
 //        increment before the first unloading (the highest stresses: for
 //        sands the e-log sigma line steepens with stress, and the last
@@ -84,6 +96,9 @@ class OedometerTest final : public ClosedBoxTest {
   std::int64_t loading_start_step() const override { return p_.load_start_step; }
   double progress() const override;
   double final_progress() const override { return 1; }
+  // Constant rate of strain instead of stages held to rest.
+  bool constant_rate() const { return spec_.oedometer.loading == "constant-rate"; }
+  double cap_speed() const { return cap_speed_; }       // m/s at a constant rate (0 before loading)
   std::string progress_label() const override { return "fraction of the load stages done"; }
   std::string status_line() const override;
   std::string phase_note() const override;
@@ -115,6 +130,7 @@ class OedometerTest final : public ClosedBoxTest {
     CalmCounter calm;
     ForceWindow window;
     double height_at_load = 0;      // m, H_0
+    double last_row_stress = 0;     // Pa, sigma_v of the last row (constant rate)
     std::int64_t load_start_step = 0;
     std::int64_t stage_start_step = 0;
     std::vector<std::vector<double>> rows;
@@ -125,12 +141,17 @@ class OedometerTest final : public ClosedBoxTest {
   void start_loading();
   void start_stage(int stage);
   bool stage_at_rest();
+  bool stage_reached() const;  // constant rate: the cap stress has reached the stage's
+  StressServo stage_servo(int stage) const;  // stages: holds the stage's stress
+  void set_cap_speed();        // constant rate: cap_speed_ from the inertial number
+  bool advance_constant_rate(int max_steps);
   void record_row();
   double area() const { return spec_.box.length * spec_.box.width; }
   double cap_height() const;
 
   Progress p_;
   StressServo servo_{0, 0, 0, 0};  // set at each stage
+  double cap_speed_ = 0;            // m/s, constant rate
 };
 
 }  // namespace grainlab

@@ -70,6 +70,20 @@ TEST(LabTestSaveRestore, OedometerMidStageAfterARow) {
       600);
 }
 
+TEST(LabTestSaveRestore, OedometerAtAConstantRateUnloading) {
+  // The cap's speed (re-derived from H_0), the last row's stress, the rows;
+  // saved on the way back down, after the cap has turned.
+  DirectShearSpec spec = testing_support::loose_bead_spec("oedometer");
+  spec.oedometer.stresses = {200e3, 100e3};
+  spec.oedometer.loading = "constant-rate";
+  save_restore_continue(
+      spec,
+      [](const LabTest& t) {
+        return t.loading() && !t.series().empty() && t.series().back()[1] == 2 && t.world().state.step % 7 != 0;
+      },
+      600);
+}
+
 TEST(LabTestSaveRestore, TriaxialMidShear) {
   // The four side servos and the cap's speed, the side stress sums, the rows.
   DirectShearSpec spec = testing_support::loose_bead_spec("triaxial");
