@@ -118,6 +118,7 @@ from pathlib import Path
 import numpy as np
 import matplotlib
 import matplotlib.ticker
+import matplotlib.transforms
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
@@ -1459,7 +1460,9 @@ def fig_mohr_circles(runs, mohr, out_dir):
     ax.set_xlabel("normal effective stress $\\sigma'$ (kPa)")
     ax.set_ylabel("shear stress $\\tau$ (kPa)")
     # Below the axes: inside, it would cover the envelopes, which cross the whole plot.
-    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.13), fontsize=8, ncol=2)
+    # Its top 44 points under the axes whatever their height (equal scales): clear of the tick labels and x label.
+    below = matplotlib.transforms.offset_copy(ax.transAxes, fig=fig, y=-44, units="points")
+    ax.legend(loc="upper center", bbox_to_anchor=(0.5, 0.0), bbox_transform=below, fontsize=8, ncol=2)
     ax.set_title("Mohr circles at the peak and at the critical state")
     return f.save(fig, out_dir, "mohr_circles.png")
 
