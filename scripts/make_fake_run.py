@@ -1,8 +1,11 @@
 #!/usr/bin/python3
-"""Fabricate a plausible grainlab direct shear run folder, for testing scripts/report.py.
+"""Fabricate a plausible grainlab direct shear or triaxial run folder, for testing scripts/report.py.
 
     /usr/bin/python3 scripts/make_fake_run.py OUT_DIR [--preset CLASS] [--seed N]
                                              [--no-analysis] [--no-roundness]
+    /usr/bin/python3 scripts/make_fake_run.py OUT_DIR --test triaxial [--sigma3 KPA]
+                                             [--phi DEG] [--cohesion KPA] [--phi-cs DEG]
+                                             [--cohesion-cs KPA] [--preset CLASS] [--seed N]
 
 Writes exactly the files of the run-folder contract that report.py reads
 (see the docstring of scripts/report.py):
@@ -28,6 +31,16 @@ Kanatani's coefficients (D_ij = 15/2 dev phi_ij, D_ijkl = 315/8 (...)), and
 the rose histogram and Kanatani grid as src/analysis/rose.h defines them:
 this script stands in for the engine, which computes every number the report
 shows.
+
+A triaxial run (--test triaxial) is series.csv (the columns of
+src/lab/triaxial.cpp triaxial_series_columns(), one row per 0.1 % of axial
+strain to 15 %) and run.json (the keys src/apps/run_command.cpp writes, with
+config.test = "triaxial", config.consolidation.normal_stress = sigma_3 and
+the "triaxial" summary of src/lab/triaxial.cpp, computed from the rows by a
+port of summarise_triaxial). Its peak q/p' lies exactly on the Mohr-Coulomb
+envelope tau = c' + sigma' tan phi' given by --phi and --cohesion, its
+critical state on --phi-cs and --cohesion-cs, so a fit over runs at several
+--sigma3 recovers them.
 
 Coordinates are in the engine's world frame: x along the shear (box centred
 on x = 0), y across, z up from the box floor; the shear plane is at z = H/2.
@@ -165,6 +178,175 @@ def write_csv(path, header, rows):
             w.writerow([repr(float(v)) for v in r])
 
 
+# ---------------------------------------------------------------------------
+# A fake drained triaxial run (--test triaxial).
+
+TRIAXIAL_COLUMNS = ["time_s", "axial_strain", "volumetric_strain", "axial_stress_Pa", "cell_pressure_Pa",
+                    "deviator_stress_Pa", "mean_stress_Pa", "stress_ratio", "side_stress_error", "void_ratio",
+                    "coordination_number", "kinetic_energy_J", "unbalanced_force_ratio", "inertial_number"]
+# (src/lab/triaxial.cpp triaxial_series_columns(), in its order.)
+
+
+def eta_of_mohr_coulomb(sigma3, phi_deg, c):
+    """q/p' of triaxial compression at failure on tau = c + sigma tan(phi), at cell pressure sigma3 (Pa):
+    sigma_1 = sigma_3 K_p + 2 c sqrt(K_p), K_p = (1 + sin phi) / (1 - sin phi)."""
+    s = math.sin(math.radians(phi_deg))
+    kp = (1 + s) / (1 - s)
+    sigma1 = sigma3 * kp + 2 * c * math.sqrt(kp)
+    return 3 * (sigma1 - sigma3) / (sigma1 + 2 * sigma3)
+
+
+def summarise_triaxial(rows):
+    """src/lab/triaxial.cpp summarise_triaxial, line for line (rows in TRIAXIAL_COLUMNS order): this script
+    stands in for the engine, so run.json holds what the engine would compute from these rows."""
+    ea, ev, q, eta = rows[:, 1], rows[:, 2], rows[:, 5], rows[:, 7]
+    fric = lambda x: math.degrees(math.asin(min(1.0, max(-1.0, 3 * x / (6 + x)))))
+    smoothed = [float(np.mean(eta[np.abs(ea - ea[i]) <= 0.005 + 1e-12])) for i in range(len(ea))]
+    peak = int(np.argmax(smoothed))  # the first of equal maxima, as the C++'s strict '>'
+    q_peak = int(np.argmax(q))
+    s = {"peak_stress_ratio": smoothed[peak], "axial_strain_at_peak": float(ea[peak])}
+    s["peak_friction_angle_deg"] = fric(s["peak_stress_ratio"])
+    s["critical_stress_ratio"] = float(np.mean(eta[ea >= 0.8 * ea[-1]]))
+    s["critical_friction_angle_deg"] = fric(s["critical_stress_ratio"])
+    psi_p, j = float("nan"), 0
+    for i in range(len(ea)):
+        j = max(j, i)
+        while j < len(ea) and ea[j] < ea[i] + 0.01:
+            j += 1
+        if j == len(ea):
+            break
+        r = (ev[j] - ev[i]) / (ea[j] - ea[i])
+        psi = math.degrees(math.asin(min(1.0, max(-1.0, -r / (2 - r)))))
+        if not psi <= psi_p:
+            psi_p = psi
+    s["peak_dilatancy_angle_deg"] = psi_p
+    half, e50 = 0.5 * q[q_peak], float("nan")
+    for i in range(1, q_peak + 1):
+        if q[i] >= half:
+            e = ea[i - 1] + (half - q[i - 1]) / (q[i] - q[i - 1]) * (ea[i] - ea[i - 1])
+            if e > 0:
+                e50 = half / e
+            break
+    s["e50_Pa"] = e50
+    s["final_void_ratio"] = float(rows[-1, 9])
+    return s
+
+
+def smoothstep(x):
+    x = np.clip(x, 0, 1)
+    return x * x * (3 - 2 * x)
+
+
+def make_triaxial(a, out):
+    """series.csv and run.json of a drained triaxial run at cell pressure a.sigma3 (kPa) whose peak q/p'
+    lies exactly on the Mohr-Coulomb envelope (a.phi, a.cohesion) and whose critical state lies on
+    (a.phi_cs, a.cohesion_cs): q/p' has a plateau at the peak wider than the engine's 1 % averaging and is
+    constant, up to noise of zero mean, over the last fifth of the strain, so the engine's summary
+    (summarise_triaxial) gives those values exactly and a Mohr-Coulomb fit over several such runs recovers
+    the envelope. Noise is added elsewhere (the rise, the softening, sigma_3's hold, eps_v)."""
+    P = PRESETS[a.preset]
+    rng = np.random.default_rng(a.seed)
+    sigma3 = 1e3 * a.sigma3
+    eta_p = eta_of_mohr_coulomb(sigma3, a.phi, 1e3 * a.cohesion)
+    eta_cs = eta_of_mohr_coulomb(sigma3, a.phi_cs, 1e3 * a.cohesion_cs)
+    if not 0 < eta_cs <= eta_p < 3:
+        raise SystemExit(f"make_fake_run.py: error: q/p' at the peak {eta_p:.3f} and at the critical state "
+                         f"{eta_cs:.3f} need 0 < eta_cs <= eta_p < 3: choose other --phi/--phi-cs/--cohesion")
+    final = 0.15
+    eps = np.round(np.arange(0, final + 1e-9, 0.001), 6)
+    n = len(eps)
+    # The peak comes later and the dilation is weaker at a higher cell pressure.
+    lvl = math.log(sigma3 / 100e3)
+    e_rise = 0.025 + 0.004 * lvl          # q/p' reaches its peak here ...
+    e_soft = e_rise + 0.014               # ... holds it to here (wider than the 1 % averaging) ...
+    e_cs = 0.10                           # ... and falls to the critical state by here (the last fifth: >= 12 %)
+    eta = np.where(eps < e_rise, eta_p * (1 - (1 - eps / e_rise) ** 3),
+                   eta_p - (eta_p - eta_cs) * smoothstep((eps - e_soft) / (e_cs - e_soft)))
+    away = (eps < e_rise - 0.015) | ((eps > e_soft + 0.015) & (eps < 0.8 * final - 0.001))
+    eta = eta + np.where(away & (eps > 0), 0.006 * eta_p * rng.standard_normal(n), 0.0)
+    last = eps >= 0.8 * final - 1e-9  # the engine's last fifth: noise of zero mean there
+    wobble = 0.006 * eta_p * rng.standard_normal(int(np.sum(last)))
+    eta[last] += wobble - wobble.mean()
+    eta[0] = 0.0
+    # sigma_3 as the sides' servo holds it, and the stresses that follow from q/p' there.
+    s3 = sigma3 * (1 + 0.004 * rng.standard_normal(n))
+    s3[0] = sigma3
+    p = 3 * s3 / (3 - eta)
+    q = eta * p
+    s1 = s3 + q
+    side_err = np.abs(0.008 * rng.standard_normal(n)) + 0.002
+    # eps_v (compression +): a contraction, then dilation at a rate that peaks with q/p' and fades by
+    # the critical state; the dilatancy follows Bolton's phi_p - phi_cs = 0.8 psi_p.
+    psi = math.radians(max(0.5, (a.phi - a.phi_cs) / 0.8) * (1 - 0.1 * lvl))
+    r_max = 2 * math.sin(psi) / (1 - math.sin(psi))
+    rate = 0.35 * np.exp(-eps / 0.004) - r_max * smoothstep((eps - 0.004) / (e_rise - 0.004)) * \
+        (1 - smoothstep((eps - e_soft) / (e_cs + 0.02 - e_soft)))
+    ev = np.concatenate([[0.0], np.cumsum(0.5 * (rate[1:] + rate[:-1]) * np.diff(eps))])
+    ev = ev + np.where(eps > 0, 2e-5 * rng.standard_normal(n), 0.0)
+    e0 = 0.62 - 0.01 * lvl + 0.004 * rng.standard_normal()
+    void = (1 + e0) * (1 - ev) - 1
+    speed = 9e-4 * H / (D_MEAN * math.sqrt(2650.0 * 100.0 / sigma3))
+    time = 0.21 + eps * H / speed
+    cn = P["cn0"] - 0.7 * (1 - np.exp(-eps / 0.02)) + 0.02 * rng.standard_normal(n) + 0.3 * lvl
+    ke = 1e-9 * (1 + 3 * np.abs(rng.standard_normal(n)))
+    unb = 0.01 + 0.01 * np.abs(rng.standard_normal(n))
+    inertial = 9e-4 * np.sqrt(sigma3 / p) * (1 + 0.03 * rng.standard_normal(n))
+    rows = np.column_stack([time, eps, ev, s1, s3, q, p, eta, side_err, void, cn, ke, unb, inertial])
+    write_csv(out / "series.csv", TRIAXIAL_COLUMNS, rows)
+
+    t = summarise_triaxial(rows)
+    for key, want in (("peak_stress_ratio", eta_p), ("critical_stress_ratio", eta_cs)):
+        assert abs(t[key] - want) < 1e-9, (key, t[key], want)  # the curves above are built for this
+    t = {"void_ratio_at_shear": float(void[0]), **t}
+    dt = 2.4e-7
+    e_target = 0.86 - 0.96 * (0.86 - 0.53)
+    run = {
+        "grainlab_version": "0.1.0",
+        "config": {
+            "test": "triaxial",
+            "seed": a.seed,
+            "grains": {"preset": a.preset, "folder": "", "shapes": 24, "faces": 500,
+                       "d_min": 0.707e-3, "d_max": 0.841e-3},
+            "material": {"preset": SAND_OF[a.preset], "contact_law": "hertz-material", "density": 2650.0,
+                         "friction": P["mu"], "youngs_modulus": 4e9, "poisson_ratio": 0.3,
+                         "restitution": 0.5, "k_n": 1e12, "k_t": 8e11, "gamma_n": 40.0, "gamma_t": 20.0,
+                         "wall_friction": 0.0},
+            "box": {"length": L, "width": W, "height": H, "gap": GAP},
+            "specimen": {"relative_density": 0.96, "indices": "own", "own_e_max": 0.0, "own_e_min": 0.0,
+                         "e_max": 0.86, "e_min": 0.53, "void_ratio": -1.0, "tolerance": 0.02,
+                         "relative_density_tolerance": 0.05, "deposition_friction": 0.05},
+            "consolidation": {"normal_stress": sigma3, "tolerance": 0.01, "max_unbalanced": 0.1},
+            "shear": {"speed": 0.0, "final_strain": 0.1},
+            "oedometer": {"stresses": [200e3, 400e3, 800e3, 400e3, 200e3, 100e3]},
+            "triaxial": {"final_strain": final},
+            "numerics": {"time_step": 0.0, "time_step_fraction": 0.4, "density_scaling": 0.0,
+                         "inertial_number": 9e-4, "threads": 0},
+            "output": {"folder": str(out), "strain_interval": 0.001, "checkpoint_interval": 60.0,
+                       "snapshot_interval": 0.02},
+        },
+        "seed": a.seed,
+        "grains": 1000,
+        "time_step_s": dt,
+        "density_scaling": 100.0,
+        "phase": "done",
+        "mean_equivalent_diameter_m": D_MEAN,
+        "preparation": {"void_ratio": float(e0 + 0.003), "compacted_void_ratio": float(e0 + 0.02),
+                        "relative_density": float((0.86 - e0 - 0.003) / (0.86 - 0.53)),
+                        "bulk_void_ratio": float(e0 + 0.03), "relative_density_lab": float((0.86 - e0) / 0.33),
+                        "deposition_friction": 0.05, "target_void_ratio": e_target},
+        "axial_speed_m_per_s": speed,
+        "triaxial": t,
+        "timings": {"wall_s": 600.0 * (1.5 + rng.random()), "steps": int(time[-1] / dt),
+                    "simulated_s": float(time[-1])},
+        "final": {"cap_normal_stress_Pa": float(s3[-1]), "contacts": 2900},
+        "specimen_preparation": {},
+    }
+    if not a.no_roundness:
+        run["mean_roundness"] = P["R"]
+    (out / "run.json").write_text(json.dumps(run, indent=2) + "\n")
+    return 0
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("out", help="run folder to create (created if missing; files overwritten)")
@@ -173,7 +355,19 @@ def main(argv=None):
     ap.add_argument("--no-analysis", action="store_true",
                     help="write only series.csv (without the analysis columns) and run.json")
     ap.add_argument("--no-roundness", action="store_true", help="leave mean_roundness out of run.json")
+    ap.add_argument("--test", default="direct-shear", choices=["direct-shear", "triaxial"],
+                    help="the lab test of the run (triaxial: series.csv and run.json only)")
+    tx = ap.add_argument_group("triaxial (--test triaxial): the envelopes the run's peak and critical state lie on")
+    tx.add_argument("--sigma3", type=float, default=100.0, metavar="KPA", help="cell pressure sigma_3, kPa")
+    tx.add_argument("--phi", type=float, default=36.0, metavar="DEG", help="peak friction angle phi', deg")
+    tx.add_argument("--cohesion", type=float, default=0.0, metavar="KPA", help="peak cohesion intercept c', kPa")
+    tx.add_argument("--phi-cs", type=float, default=31.0, metavar="DEG", help="critical-state phi', deg")
+    tx.add_argument("--cohesion-cs", type=float, default=0.0, metavar="KPA", help="critical-state c', kPa")
     a = ap.parse_args(argv)
+    if a.test == "triaxial":
+        out = Path(a.out)
+        out.mkdir(parents=True, exist_ok=True)
+        return make_triaxial(a, out)
 
     P = PRESETS[a.preset]
     rng = np.random.default_rng(a.seed)

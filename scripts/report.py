@@ -1,5 +1,6 @@
 #!/usr/bin/python3
-"""The grainlab run report: HTML and PNG figures for direct shear runs (paper Figs. 10-17).
+"""The grainlab run report: HTML and PNG figures for direct shear runs (paper Figs. 10-17), oedometer and
+triaxial runs, and comparisons of direct shear runs or of triaxial runs (Mohr circles, c' and phi').
 
 Usage (Debian's Python, which has matplotlib and numpy):
 
@@ -9,8 +10,10 @@ Usage (Debian's Python, which has matplotlib and numpy):
 
 One run folder gives a report of that run; several give a comparison report
 that overlays their curves and tabulates their peaks against their mean grain
-roundness. The page works offline: inline CSS, no JavaScript, relative links
-to the PNGs written next to it. The figures mirror He, Zheng & Schaefer (2021),
+roundness (direct shear), or their curves, stress paths, Mohr circles and the
+Mohr-Coulomb envelope fitted over them (triaxial runs at several confining
+stresses; the fit also goes to mohr_coulomb.json). The page works offline:
+inline CSS, no JavaScript, relative links to the PNGs written next to it. The figures mirror He, Zheng & Schaefer (2021),
 "Simulating shearing behavior of realistic granular soils using physics
 engine", Figs. 10-17.
 
@@ -75,7 +78,10 @@ integrating to one over the sphere.
 
 The report derives no number: every value it prints or plots is read from
 these files (the engine computes them: src/analysis/); it only picks values
-(a peak's row), converts units for display and draws.
+(a peak's row), converts units for display and draws. The one exception is
+the Mohr-Coulomb envelope of a triaxial comparison, which spans runs the
+engine never sees together: a closed-form least squares over run.json's
+peak and critical-state q/p' (see "Comparing triaxial runs" below).
 
 Figures of one run: stress ratio F/N (Fig. 10a), cap vertical displacement
 (Fig. 10b), horizontal displacement against height with the band (Fig. 11),
@@ -83,13 +89,19 @@ mean rotation (Fig. 13), coordination number (Fig. 14), 3D rose diagrams of
 contact normals with Kanatani's density (Fig. 15), fabric factor Psi (Fig. 16),
 force chains (Fig. 17); tables of inputs and peak values. Comparison: overlays
 of F/N and cap displacement (Fig. 10a, b), peak friction and dilation angles
-against mean roundness (Fig. 10c, d) and a table of peaks.
+against mean roundness (Fig. 10c, d) and a table of peaks. Triaxial comparison:
+q/p' and eps_v against eps_a, stress paths in p'-q, Mohr circles at the peak
+and at the critical state with the fitted envelopes, a table of the fits
+(phi', c', R^2) and one of the runs; mohr_coulomb.json. Runs of different
+tests are not compared, nor oedometer runs.
 
-Output: index.html and the PNGs are (over)written in the output folder; PNGs
-of an earlier report that this one does not draw are removed. At the end the
+Output: index.html and the PNGs (and a triaxial comparison's mohr_coulomb.json)
+are (over)written in the output folder; PNGs of an earlier report that this
+one does not draw are removed. At the end the
 script prints the path of index.html, the figures written and the notes. Exit
 status 0, or 1 with one line "report.py: error: ..." on stderr when a run
-folder lacks series.csv or run.json (or they cannot be read).
+folder lacks series.csv or run.json (or they cannot be read), or when the runs
+of a comparison are of different tests or are oedometer runs.
 Only the Python standard library, numpy and matplotlib (Agg backend) are used.
 """
 
@@ -106,6 +118,7 @@ from pathlib import Path
 import numpy as np
 import matplotlib
 import matplotlib.ticker
+import matplotlib.transforms
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
@@ -126,6 +139,9 @@ SINGLE_PNGS = ["stress_ratio.png", "vertical_displacement.png", "displacement_pr
                "coordination_number.png", "rose_diagram.png", "fabric_psi.png", "force_chains.png",
                "e_log_sigma.png", "k0.png", "constrained_modulus.png", "triaxial_curves.png", "stress_path.png"]
 COMPARISON_PNGS = ["stress_strain_overlay.png", "peaks_vs_roundness.png"]
+TRIAXIAL_COMPARISON_PNGS = ["triaxial_overlay.png", "stress_paths.png", "mohr_circles.png"]
+# Everything a comparison may write besides index.html (both kinds: an --out folder may hold either).
+COMPARISON_OUTPUTS = COMPARISON_PNGS + TRIAXIAL_COMPARISON_PNGS + ["mohr_coulomb.json"]
 
 plt.rcParams.update({
     "font.size": 10, "axes.titlesize": 11, "axes.labelsize": 10, "legend.fontsize": 9,
@@ -1225,6 +1241,335 @@ def triaxial_report(run, out_dir):
     return write_page(out_dir, f"grainlab triaxial report: {run.name}", subtitle, blocks), figs
 
 
+# ---------------------------------------------------------------------------
+# Comparing triaxial runs at several confining stresses: overlays, stress
+# paths, Mohr circles and the Mohr-Coulomb envelope fitted over the runs.
+#
+# Each run gives two circles: at the peak and at the critical state. Their
+# stresses come from run.json (the values the single-run report shows): the
+# engine's q/p' (triaxial.peak_stress_ratio, critical_stress_ratio) and
+# sigma_3 = config.consolidation.normal_stress, the cell pressure the sides'
+# servos hold. With p' = (sigma_1 + 2 sigma_3)/3 and q = sigma_1 - sigma_3,
+# eta = q/p' gives sigma_1 (3 - eta) = sigma_3 (3 + 2 eta):
+#     sigma_1 = sigma_3 (3 + 2 eta) / (3 - eta).
+# A run alone (c' = 0) has sin phi' = (sigma_1 - sigma_3)/(sigma_1 + sigma_3)
+# = 3 eta / (6 + eta), run.json's friction angle.
+#
+# The fit. A circle of centre s' = (sigma_1 + sigma_3)/2 and radius
+# t = (sigma_1 - sigma_3)/2 touches the line tau = c' + sigma' tan phi' when
+# the distance from (s', 0) to it equals t:
+#     (c' + s' tan phi') / sqrt(1 + tan^2 phi') = t,
+# i.e. (multiplying by cos phi')  t = c' cos phi' + s' sin phi' = a + s' sin phi'.
+# So the envelope tangent to every circle is the straight line t = a + b s' in
+# the s'-t plane (the MIT stress path plane's Kf line), with sin phi' = b and
+# c' = a / cos phi'. Least squares of t on s' over the runs gives a and b: the
+# exact common tangent when the (s', t) points line up (two runs always do),
+# the best straight envelope otherwise (R^2 and the rms residual of t tell how
+# far they are from a line). It is the one number the report computes: it
+# needs several runs, which the engine never sees together.
+
+def triaxial_sigma3(run):
+    """sigma_3 of the run (Pa): the cell pressure its sides' servos held, config.consolidation.normal_stress."""
+    return num(get(run.info, "config", "consolidation", "normal_stress"))
+
+
+def mohr_state(run, key):
+    """(sigma_1, sigma_3) in Pa at run.json's triaxial.<key> (a q/p'), or None when it is missing or not < 3."""
+    s3, eta = triaxial_sigma3(run), num(get(run.info, "triaxial", key))
+    if s3 is None or s3 <= 0 or eta is None or not 0 <= eta < 3:
+        return None
+    return s3 * (3 + 2 * eta) / (3 - eta), s3
+
+
+def tidy(x):
+    """x without a minus sign on a value that rounds to zero (a fitted c' of -1e-14 Pa is 0.00 kPa)."""
+    return round(x, 9) + 0.0
+
+
+def mohr_coulomb_fit(points):
+    """Least squares t = a + b s' over [(s', t)] in Pa (see above). A dict with phi_deg, c_Pa, a_Pa, sin_phi,
+    r_squared, rms_residual_Pa, runs; or one with only 'refused' (why) when no envelope can be fitted."""
+    n = len(points)
+    if n < 2:
+        return {"refused": f"{n} run{'s' if n != 1 else ''} with the stresses needed: a fit needs two or more"}
+    s = np.array([p[0] for p in points], float)
+    t = np.array([p[1] for p in points], float)
+    ds, dt = s - s.mean(), t - t.mean()
+    sxx = float(np.sum(ds * ds))
+    if sxx <= (1e-9 * float(np.max(np.abs(s)))) ** 2:
+        return {"refused": "every circle has the same centre: give runs at different sigma_3"}
+    b = float(np.sum(ds * dt)) / sxx
+    a = float(t.mean()) - b * float(s.mean())
+    if not 0 < b < 1:
+        return {"refused": f"the best line has slope sin phi' = {b:.3f}, outside (0, 1): no envelope"}
+    phi = math.asin(b)
+    res = t - (a + b * s)
+    ss_res, ss_tot = float(np.sum(res * res)), float(np.sum(dt * dt))
+    return {"phi_deg": math.degrees(phi), "c_Pa": a / math.cos(phi), "a_Pa": a, "sin_phi": b,
+            "r_squared": 1 - ss_res / ss_tot if ss_tot > 0 else 1.0,
+            "rms_residual_Pa": math.sqrt(ss_res / n), "runs": n}
+
+
+ENVELOPES = (("peak", "peak_stress_ratio", "peak_friction_angle_deg", "peak"),
+             ("critical_state", "critical_stress_ratio", "critical_friction_angle_deg", "critical state"))
+
+
+def triaxial_mohr(runs):
+    """Per envelope ('peak', 'critical_state'): the runs' circles [(run, sigma_1, sigma_3)], the fit and the
+    runs left out (names)."""
+    out = {}
+    for env, key, _, _ in ENVELOPES:
+        circles = [(r, *st) for r in runs for st in [mohr_state(r, key)] if st is not None]
+        fit = mohr_coulomb_fit([(0.5 * (s1 + s3), 0.5 * (s1 - s3)) for _, s1, s3 in circles])
+        out[env] = {"circles": circles, "fit": fit, "left_out": [r.name for r in runs if all(c[0] is not r for c in circles)]}
+    return out
+
+
+def sigma3_label(run, runs):
+    """Legend label: sigma_3 in kPa, with the run's name when another run has the same sigma_3 and its grain
+    class when the runs' classes differ."""
+    s3 = triaxial_sigma3(run)
+    text = f"σ$_3$ = {fmt(None if s3 is None else 1e-3 * s3, '.4g', 'kPa')}".replace("&mdash;", "?")
+    same = [r for r in runs if triaxial_sigma3(r) == s3]
+    extra = []
+    if len({r.preset for r in runs}) > 1:
+        extra.append(run.preset)
+    if len(same) > 1:
+        extra.append(run.name)
+    return text + (f" ({', '.join(extra)})" if extra else "")
+
+
+def fig_triaxial_overlay(runs, out_dir):
+    f = Figure("Stress ratio and volumetric strain of all runs", "ASTM D7181",
+               "Top: q/p' against axial strain, the dot at each run's peak (run.json); bottom: volumetric strain, "
+               "compression positive (dilation falls); one colour per run, labelled by its cell pressure "
+               "&sigma;<sub>3</sub>.")
+    col = run_colors(runs)
+    fig, (a1, a2) = plt.subplots(2, 1, figsize=(7.0, 7.4), sharex=True)
+    for r in runs:
+        ea, eta, ev = r.col("axial_strain"), r.col("stress_ratio"), r.col("volumetric_strain")
+        if ea is None or eta is None:
+            f.missing(f"{r.name}/series.csv columns axial_strain and stress_ratio")
+            continue
+        a1.plot(100 * ea, eta, color=col[id(r)], lw=1.4, label=sigma3_label(r, runs))
+        ep, etap = num(get(r.info, "triaxial", "axial_strain_at_peak")), num(get(r.info, "triaxial", "peak_stress_ratio"))
+        if ep is not None and etap is not None:
+            a1.plot([100 * ep], [etap], "o", color=col[id(r)], ms=5)
+        if ev is not None:
+            a2.plot(100 * ea, 100 * ev, color=col[id(r)], lw=1.4)
+        else:
+            f.missing(f"{r.name}/series.csv column volumetric_strain")
+    a1.set_ylabel("stress ratio q/p' (–)")
+    a1.set_ylim(bottom=0)
+    a1.set_title("(a) stress ratio")
+    a1.legend(loc="lower right")
+    a2.axhline(0, color="0.3", lw=0.8)
+    a2.set_ylabel("volumetric strain $\\varepsilon_v$ (%, compression +)")
+    a2.set_xlabel("axial strain $\\varepsilon_a$ (%)")
+    a2.set_xlim(left=0)
+    a2.set_title("(b) volumetric strain")
+    fig.tight_layout()
+    return f.save(fig, out_dir, "triaxial_overlay.png")
+
+
+def fig_stress_paths(runs, out_dir):
+    f = Figure("Stress paths in p'-q", "ASTM D7181",
+               "Deviator stress q against mean effective stress p' during shear, one colour per run: each starts "
+               "at p' = &sigma;<sub>3</sub> and rises along a slope of 3 (constant &sigma;<sub>3</sub>); dots: the "
+               "peak of q/p' (run.json's strain), squares: the last sample; dotted: each run's critical-state line "
+               "q = &eta;<sub>cs</sub> p' (run.json's critical_stress_ratio).")
+    col = run_colors(runs)
+    fig, ax = plt.subplots(figsize=(7.0, 4.8))
+    pmax = 0.0
+    for r in runs:
+        p, q, ea = r.col("mean_stress_Pa"), r.col("deviator_stress_Pa"), r.col("axial_strain")
+        if p is None or q is None:
+            f.missing(f"{r.name}/series.csv columns mean_stress_Pa and deviator_stress_Pa")
+            continue
+        ax.plot(1e-3 * p, 1e-3 * q, color=col[id(r)], lw=1.2, label=sigma3_label(r, runs))
+        ep = num(get(r.info, "triaxial", "axial_strain_at_peak"))
+        if ep is not None and ea is not None:
+            k = int(np.nanargmin(np.abs(ea - ep)))
+            ax.plot([1e-3 * p[k]], [1e-3 * q[k]], "o", color=col[id(r)], ms=5)
+        ax.plot([1e-3 * p[-1]], [1e-3 * q[-1]], "s", color=col[id(r)], ms=5)
+        pmax = max(pmax, float(np.nanmax(p)))
+    for r in runs:
+        eta = num(get(r.info, "triaxial", "critical_stress_ratio"))
+        if eta is not None and pmax > 0:
+            ax.plot([0, 1.05e-3 * pmax], [0, 1.05e-3 * pmax * eta], ":", color=col[id(r)], lw=1.0)
+    ax.plot([], [], ":", color="0.4", lw=1.0, label="q = $\\eta_{cs}$ p' of each run (run.json)")
+    ax.set_xlim(0, 1.05e-3 * pmax if pmax > 0 else None)
+    ax.set_ylim(bottom=0)
+    ax.set_xlabel("mean effective stress p' (kPa)")
+    ax.set_ylabel("deviator stress q (kPa)")
+    ax.legend(loc="upper left")
+    ax.set_title("Stress paths")
+    return f.save(fig, out_dir, "stress_paths.png")
+
+
+def fig_mohr_circles(runs, mohr, out_dir):
+    f = Figure("Mohr circles and the Mohr-Coulomb envelopes", "Mohr-Coulomb",
+               "Shear stress &tau; against normal effective stress &sigma;' (equal scales, so circles are round). "
+               "For each run the circle at the peak (solid) and at the critical state (dashed), from "
+               "&sigma;<sub>3</sub> = the run's consolidation normal stress (config.consolidation.normal_stress, "
+               "the cell pressure the sides hold) and &sigma;<sub>1</sub> = &sigma;<sub>3</sub> (3 + 2&eta;)/(3 &minus; "
+               "&eta;) with &eta; = run.json's triaxial.peak_stress_ratio or critical_stress_ratio (q/p' averaged "
+               "over 1 % of axial strain at the peak, over the last fifth at the critical state). Black: the "
+               "envelopes &tau; = c' + &sigma;' tan &phi;' fitted over the runs (least squares of t = "
+               "(&sigma;<sub>1</sub> &minus; &sigma;<sub>3</sub>)/2 on s' = (&sigma;<sub>1</sub> + "
+               "&sigma;<sub>3</sub>)/2, t = c' cos &phi;' + s' sin &phi;'); small dots: where each circle touches "
+               "its fitted envelope.")
+    if not mohr["peak"]["circles"] and not mohr["critical_state"]["circles"]:
+        return f.missing("run.json triaxial.peak_stress_ratio, critical_stress_ratio or "
+                         "config.consolidation.normal_stress", "in every run")
+    for env, _, _, what in ENVELOPES:
+        if mohr[env]["left_out"]:
+            f.missing(f"the {what} stresses of " + ", ".join(mohr[env]["left_out"]), "no circle drawn")
+    col = run_colors(runs)
+    fig, ax = plt.subplots(figsize=(8.0, 5.6))
+    th = np.linspace(0, math.pi, 181)
+    smax = rmax = 0.0
+    for env, ls in (("peak", "-"), ("critical_state", "--")):
+        for r, s1, s3 in mohr[env]["circles"]:
+            c, rad = 0.5e-3 * (s1 + s3), 0.5e-3 * (s1 - s3)
+            ax.plot(c + rad * np.cos(th), rad * np.sin(th), ls, color=col[id(r)], lw=1.3,
+                    label=sigma3_label(r, runs) if env == "peak" else None)
+            smax, rmax = max(smax, 1e-3 * s1), max(rmax, rad)
+    xs = np.array([0.0, 1.08 * smax])
+    for env, ls, color, what in (("peak", "-", "black", "peak"), ("critical_state", "--", "0.4", "critical state")):
+        fit = mohr[env]["fit"]
+        if "refused" in fit:
+            continue
+        tan_phi = math.tan(math.radians(fit["phi_deg"]))
+        c = tidy(1e-3 * fit["c_Pa"])
+        ax.plot(xs, c + tan_phi * xs, ls, color=color, lw=1.1,
+                label=f"{what}: $\\phi'$ = {fit['phi_deg']:.2f}°, $c'$ = {c:.2f} kPa")
+        sphi, cphi = fit["sin_phi"], math.cos(math.radians(fit["phi_deg"]))
+        for r, s1, s3 in mohr[env]["circles"]:
+            cc, rad = 0.5e-3 * (s1 + s3), 0.5e-3 * (s1 - s3)
+            ax.plot([cc - rad * sphi], [rad * cphi], ".", color=color, ms=5)
+    for env, _, _, what in ENVELOPES:
+        if "refused" in mohr[env]["fit"]:
+            f.notes.append(f"no {what} envelope: {mohr[env]['fit']['refused']}")
+    # A proxy so the legend says which line style is which state.
+    ax.plot([], [], "-", color="0.5", lw=1.3, label="circle at the peak")
+    ax.plot([], [], "--", color="0.5", lw=1.3, label="circle at the critical state")
+    ax.set_aspect("equal", adjustable="box")
+    ax.set_xlim(0, 1.08 * smax)
+    ax.set_ylim(0, 1.25 * rmax)
+    ax.set_xlabel("normal effective stress $\\sigma'$ (kPa)")
+    ax.set_ylabel("shear stress $\\tau$ (kPa)")
+    # Below the axes: inside, it would cover the envelopes, which cross the whole plot.
+    # Its top 44 points under the axes whatever their height (equal scales): clear of the tick labels and x label.
+    below = matplotlib.transforms.offset_copy(ax.transAxes, fig=fig, y=-44, units="points")
+    ax.legend(loc="upper center", bbox_to_anchor=(0.5, 0.0), bbox_transform=below, fontsize=8, ncol=2)
+    ax.set_title("Mohr circles at the peak and at the critical state")
+    return f.save(fig, out_dir, "mohr_circles.png")
+
+
+def run_link(r, out_dir):
+    report = r.dir / "report" / "index.html"
+    name = esc(r.name)
+    if report.is_file():
+        name = f'<a href="{html.escape(Path(os.path.relpath(report, out_dir)).as_posix())}">{name}</a>'
+    return name
+
+
+def grid_html(head, rows, caption):
+    th = "".join(f"<th>{h}</th>" for h in head)
+    body = "\n".join("<tr>" + "".join(f"<td>{c}</td>" for c in row) + "</tr>" for row in rows)
+    return f'<table class="grid"><caption>{caption}</caption>\n<tr>{th}</tr>\n{body}\n</table>'
+
+
+def mohr_fit_table(runs, mohr):
+    head = ["envelope", "&phi;' fitted (deg)", "c' fitted (kPa)", "R<sup>2</sup>", "rms residual of t (kPa)",
+            "runs", "&phi;' of each run alone, c' = 0 (deg, run.json)"]
+    rows = []
+    for env, _, angle, what in ENVELOPES:
+        fit = mohr[env]["fit"]
+        alone = ", ".join(fmt(get(r.info, "triaxial", angle), ".2f") for r, _, _ in mohr[env]["circles"])
+        if "refused" in fit:
+            rows.append([what, "&mdash;", "&mdash;", "&mdash;", "&mdash;", str(len(mohr[env]["circles"])),
+                         alone or "&mdash;"])
+            continue
+        exact = " (two runs: the exact line)" if fit["runs"] == 2 else ""
+        rows.append([what, fmt(fit["phi_deg"], ".2f"), fmt(tidy(1e-3 * fit["c_Pa"]), ".2f"), fmt(fit["r_squared"], ".5f"),
+                     fmt(1e-3 * fit["rms_residual_Pa"], ".3g"), f"{fit['runs']}{exact}", alone])
+    notes = "".join(f'<div class="note">no {what} envelope: {html.escape(mohr[env]["fit"]["refused"])}</div>'
+                    for env, _, _, what in ENVELOPES if "refused" in mohr[env]["fit"])
+    return grid_html(head, rows, "Mohr-Coulomb envelopes &tau; = c' + &sigma;' tan &phi;' fitted over the runs "
+                                 "(least squares of t on s'; also in mohr_coulomb.json), beside each run's own angle "
+                                 "(in the order of the table below)") + notes
+
+
+def triaxial_comparison_table(runs, out_dir):
+    head = ["run", "grain class", "&sigma;<sub>3</sub> (kPa)", "peak q/p'", "&epsilon;<sub>a</sub> at peak (%)",
+            "&phi;'<sub>p</sub> (deg)", "critical q/p'", "&phi;'<sub>cs</sub> (deg)", "&psi;<sub>p</sub> (deg)",
+            "E<sub>50</sub> (MPa)", "e at shear", "final e", "wall time (h)"]
+    rows = []
+    for r in runs:
+        t = lambda k: get(r.info, "triaxial", k)
+        s3, e50, ep = triaxial_sigma3(r), num(t("e50_Pa")), num(t("axial_strain_at_peak"))
+        wall = num(get(r.info, "timings", "wall_s"))
+        rows.append([run_link(r, out_dir), esc(r.preset), fmt(None if s3 is None else 1e-3 * s3, ".4g"),
+                     fmt(t("peak_stress_ratio"), ".4f"), fmt(None if ep is None else 100 * ep, ".2f"),
+                     fmt(t("peak_friction_angle_deg"), ".2f"), fmt(t("critical_stress_ratio"), ".4f"),
+                     fmt(t("critical_friction_angle_deg"), ".2f"), fmt(t("peak_dilatancy_angle_deg"), ".2f"),
+                     fmt(None if e50 is None else 1e-6 * e50, ".4g"), fmt(t("void_ratio_at_shear"), ".4f"),
+                     fmt(t("final_void_ratio"), ".4f"), fmt(None if wall is None else wall / 3600, ".2f")])
+    return grid_html(head, rows, "Each run (run.json's triaxial group; &phi;' from sin &phi;' = 3&eta;/(6 + &eta;), "
+                                 "c' = 0; a run's name links to its own report when it has one)")
+
+
+def write_mohr_json(runs, mohr, out_dir):
+    """mohr_coulomb.json next to index.html: the fits and each run's circles, SI units."""
+    def fit_json(env):
+        fit = dict(mohr[env]["fit"])
+        if "refused" in fit:
+            return {"phi_deg": None, "c_Pa": None, "refused": fit["refused"]}
+        return fit
+    doc = {
+        "what": "Mohr-Coulomb envelopes tau = c' + sigma' tan(phi') fitted over drained triaxial runs: least "
+                "squares of t = (sigma_1 - sigma_3)/2 on s' = (sigma_1 + sigma_3)/2, t = a + s' sin(phi'), "
+                "c' = a / cos(phi')",
+        "source": "run.json: config.consolidation.normal_stress as sigma_3; triaxial.peak_stress_ratio and "
+                  "critical_stress_ratio as eta, sigma_1 = sigma_3 (3 + 2 eta) / (3 - eta)",
+        "peak": fit_json("peak"),
+        "critical_state": fit_json("critical_state"),
+        "runs": [],
+    }
+    for r in runs:
+        entry = {"name": r.name, "folder": str(r.dir.resolve()), "sigma3_Pa": triaxial_sigma3(r)}
+        for env, key, angle, _ in ENVELOPES:
+            st = mohr_state(r, key)
+            entry[env] = None if st is None else {
+                "stress_ratio": num(get(r.info, "triaxial", key)), "sigma1_Pa": st[0], "sigma3_Pa": st[1],
+                "s_Pa": 0.5 * (st[0] + st[1]), "t_Pa": 0.5 * (st[0] - st[1]),
+                "friction_angle_deg": num(get(r.info, "triaxial", angle))}
+        doc["runs"].append(entry)
+    path = out_dir / "mohr_coulomb.json"
+    tmp = out_dir / ".mohr_coulomb.json.tmp"
+    tmp.write_text(json.dumps(doc, indent=2) + "\n")
+    os.replace(tmp, path)
+    return path
+
+
+def triaxial_comparison_report(runs, out_dir):
+    runs = sorted(runs, key=lambda r: (triaxial_sigma3(r) is None, triaxial_sigma3(r) or 0.0))
+    prepare_out(out_dir, COMPARISON_OUTPUTS)
+    mohr = triaxial_mohr(runs)
+    figs = [fig_triaxial_overlay(runs, out_dir), fig_stress_paths(runs, out_dir), fig_mohr_circles(runs, mohr, out_dir)]
+    write_mohr_json(runs, mohr, out_dir)
+    subtitle = (f"{len(runs)} drained triaxial runs, by cell pressure: " + ", ".join(
+        f"<code>{html.escape(r.name)}</code> ({esc(r.preset)}, &sigma;<sub>3</sub> = "
+        f"{fmt(1e-3 * (triaxial_sigma3(r) or float('nan')), '.4g', 'kPa')})" for r in runs) +
+        '. The fitted envelopes are also written to <a href="mohr_coulomb.json">mohr_coulomb.json</a>.')
+    blocks = ["<h2>Mohr-Coulomb strength parameters</h2>", mohr_fit_table(runs, mohr),
+              "<h2>Runs</h2>", triaxial_comparison_table(runs, out_dir), "<h2>Figures</h2>"]
+    blocks += [figure_html(f) for f in figs]
+    return write_page(out_dir, "grainlab triaxial comparison report", subtitle, blocks), figs
+
+
 
 def single_report(run, out_dir):
     if run.test == "oedometer":
@@ -1248,11 +1593,14 @@ def single_report(run, out_dir):
 
 
 def comparison_report(runs, out_dir):
-    other = [r.name for r in runs if r.test != "direct-shear"]
-    if other:
-        raise ReportError(f"a comparison report compares direct shear runs; {', '.join(other)} "
-                          "is another test: report it on its own")
-    prepare_out(out_dir, COMPARISON_PNGS)
+    tests = {r.test for r in runs}
+    if tests == {"triaxial"}:
+        return triaxial_comparison_report(runs, out_dir)
+    if tests != {"direct-shear"}:
+        raise ReportError("a comparison report compares runs of one test, all direct-shear or all triaxial "
+                          "(oedometer comparisons are not built); these are " +
+                          ", ".join(f"{r.name}: {r.test}" for r in runs) + ": report them separately")
+    prepare_out(out_dir, COMPARISON_OUTPUTS)
     figs = [fig_overlay(runs, out_dir), fig_peaks_vs_roundness(runs, out_dir)]
     subtitle = f"{len(runs)} direct shear runs: " + ", ".join(
         f"<code>{html.escape(r.name)}</code> ({esc(r.preset)})" for r in runs) + "."
@@ -1273,8 +1621,9 @@ def disambiguate_labels(runs):
 
 def main(argv=None):
     ap = argparse.ArgumentParser(
-        description="Write an HTML report with PNG figures (paper Figs. 10-17) for one grainlab direct shear run, "
-                    "or a comparison report for several.")
+        description="Write an HTML report with PNG figures for one grainlab run (direct shear: paper Figs. 10-17; "
+                    "oedometer; triaxial), or a comparison report for several direct shear runs or several "
+                    "triaxial runs (Mohr circles and a c', phi' fit).")
     ap.add_argument("runs", nargs="+", metavar="RUN_DIR", help="run folder(s) holding series.csv and run.json")
     ap.add_argument("--out", metavar="DIR", help="where to write index.html and the PNGs (default: RUN_DIR/report "
                     "for one run, RUN_DIR/../comparison/report for several, after the first run)")

@@ -88,7 +88,8 @@ grep -q "not available: run.json mean_roundness missing" "$tmp/cmp0/index.html" 
 pass "--out, and the roundness scatter skipped with a note"
 
 # --- the report reads the engine's numbers and derives none ------------------------
-# No fitting, tensors, eigenvalues or histograms in report.py: those are src/analysis/'s.
+# No fitting, tensors, eigenvalues or histograms in report.py: those are src/analysis/'s. (The one
+# exception, the Mohr-Coulomb envelope over several triaxial runs, is a closed-form least squares.)
 if grep -nE "einsum|polyfit|eigvalsh|linalg|histogram2d|arctan2|def (kanatani|octahedral|dilation_angle|rose_histogram)" \
     "$here/report.py"; then
   fail "report.py derives a number the engine computes (the lines above)"
@@ -155,6 +156,81 @@ msg="$("$PY" "$here/report.py" "$tmp/runs/empty" 2>&1 >/dev/null)"; rc=$?
 set -e
 [ "$rc" -ne 0 ] && grep -q "run.json" <<<"$msg" || fail "a folder without run.json was not refused clearly: $msg"
 pass "refuses a folder without run.json: $msg"
+
+# --- triaxial: one run, a comparison with Mohr circles, refusals --------------------
+# Three fake runs at 50, 100 and 200 kPa whose peak lies on tau = 5 kPa + sigma' tan 34 deg and whose
+# critical state lies on tau = sigma' tan 31 deg (make_fake_run.py builds q/p' for them).
+for s3 in 50 100 200; do
+  "$PY" "$here/make_fake_run.py" "$tmp/tx/s$s3" --test triaxial --sigma3 "$s3" --phi 34 --cohesion 5 \
+    --phi-cs 31 --cohesion-cs 0 --seed "$s3" >/dev/null || fail "make_fake_run.py --test triaxial failed"
+done
+"$PY" - "$tmp/tx/s100" <<'PYEOF' || fail "the fake triaxial run does not have the engine's columns and run.json keys"
+import csv, json, sys
+d = sys.argv[1]
+cols = next(csv.reader(open(d + "/series.csv")))
+# src/lab/triaxial.cpp triaxial_series_columns()
+want = ["time_s", "axial_strain", "volumetric_strain", "axial_stress_Pa", "cell_pressure_Pa", "deviator_stress_Pa",
+        "mean_stress_Pa", "stress_ratio", "side_stress_error", "void_ratio", "coordination_number",
+        "kinetic_energy_J", "unbalanced_force_ratio", "inertial_number"]
+assert cols == want, cols
+j = json.load(open(d + "/run.json"))
+assert j["config"]["test"] == "triaxial" and j["config"]["consolidation"]["normal_stress"] == 100e3
+assert set(j["triaxial"]) == {"void_ratio_at_shear", "peak_stress_ratio", "axial_strain_at_peak",
+                              "peak_friction_angle_deg", "critical_stress_ratio", "critical_friction_angle_deg",
+                              "peak_dilatancy_angle_deg", "e50_Pa", "final_void_ratio"}, j["triaxial"]
+PYEOF
+"$PY" "$here/report.py" "$tmp/tx/s100" >/dev/null || fail "report.py failed on a triaxial run"
+check_report "$tmp/tx/s100/report" triaxial_curves.png stress_path.png
+if grep -q "not available" "$tmp/tx/s100/report/index.html"; then fail "a complete triaxial run's report misses something"; fi
+grep -q "grainlab triaxial report" "$tmp/tx/s100/report/index.html" || fail "the triaxial run got another test's report"
+pass "single triaxial run: index.html with triaxial_curves.png and stress_path.png"
+
+# Given out of order: the page sorts them by sigma_3.
+out="$("$PY" "$here/report.py" "$tmp/tx/s200" "$tmp/tx/s50" "$tmp/tx/s100")" || fail "triaxial comparison failed: $out"
+cmp_dir="$tmp/tx/comparison/report"
+check_report "$cmp_dir" triaxial_overlay.png stress_paths.png mohr_circles.png
+for png in stress_strain_overlay.png peaks_vs_roundness.png; do
+  [ ! -e "$cmp_dir/$png" ] || fail "the triaxial comparison drew the direct shear $png"
+done
+if grep -q "not available" "$cmp_dir/index.html"; then fail "a complete triaxial comparison misses something"; fi
+[ -s "$cmp_dir/mohr_coulomb.json" ] || fail "no mohr_coulomb.json next to the comparison's index.html"
+"$PY" - "$cmp_dir/mohr_coulomb.json" <<'PYEOF' || fail "the Mohr-Coulomb fit does not recover the fake runs' phi' and c'"
+import json, sys
+m = json.load(open(sys.argv[1]))
+for env, phi, c_kpa in (("peak", 34.0, 5.0), ("critical_state", 31.0, 0.0)):
+    f = m[env]
+    assert f["runs"] == 3, (env, f)
+    assert abs(f["phi_deg"] - phi) < 0.1, (env, "phi'", f["phi_deg"], phi)
+    assert abs(1e-3 * f["c_Pa"] - c_kpa) < 0.1, (env, "c'", 1e-3 * f["c_Pa"], c_kpa)
+    assert f["r_squared"] > 0.9999, (env, f)
+assert [r["sigma3_Pa"] for r in m["runs"]] == [50e3, 100e3, 200e3], m["runs"]
+PYEOF
+# The page shows the same fit in its table, and each run's own angle (c' = 0) beside it.
+grep -q "<tr><td>peak</td><td>34.00</td><td>5.00</td>" "$cmp_dir/index.html" || fail "the page's fit table lacks phi' 34.00, c' 5.00"
+grep -q "<tr><td>critical state</td><td>31.00</td><td>0.00</td>" "$cmp_dir/index.html" \
+  || fail "the page's fit table lacks phi'_cs 31.00, c'_cs 0.00"
+phi100="$("$PY" -c 'import json,sys; print("%.2f" % json.load(open(sys.argv[1]))["triaxial"]["peak_friction_angle_deg"])' "$tmp/tx/s100/run.json")"
+grep -q "$phi100" "$cmp_dir/index.html" || fail "the page lacks the 100 kPa run's own phi'_p $phi100"
+[ "$(grep -o '<td>s[0-9]*</td>\|>s[0-9]*</a></td>' "$cmp_dir/index.html" | tr -dc '0-9\n' | paste -sd' ')" = "50 100 200" ] \
+  || fail "the per-run table is not sorted by sigma_3"
+pass "triaxial comparison: Mohr circles, phi' and c' recovered within 0.1 deg and 0.1 kPa (mohr_coulomb.json and page)"
+
+# The same run twice: one sigma_3, so no envelope; the page says why.
+"$PY" "$here/report.py" "$tmp/tx/s100" "$tmp/tx/s100" --out "$tmp/tx/same" >/dev/null || fail "comparison of one run twice failed"
+grep -q "no peak envelope: every circle has the same centre" "$tmp/tx/same/index.html" || fail "a fit on one sigma_3 is not refused"
+"$PY" -c 'import json,sys; assert json.load(open(sys.argv[1]))["peak"]["phi_deg"] is None' "$tmp/tx/same/mohr_coulomb.json" \
+  || fail "mohr_coulomb.json gives a phi' from one sigma_3"
+pass "one sigma_3 twice: the fit refused with a note"
+
+set +e
+msg="$("$PY" "$here/report.py" "$tmp/tx/s100" "$tmp/runs/angular" --out "$tmp/tx/mixed" 2>&1 >/dev/null)"; rc=$?
+set -e
+[ "$rc" -ne 0 ] || fail "report.py compared a triaxial and a direct shear run"
+[ "$(printf '%s\n' "$msg" | wc -l)" -eq 1 ] || fail "the refusal is not one line: $msg"
+grep -q "s100: triaxial" <<<"$msg" && grep -q "angular: direct-shear" <<<"$msg" \
+  || fail "the refusal does not say which run is which test: $msg"
+[ ! -e "$tmp/tx/mixed" ] || fail "a refused comparison wrote its folder"
+pass "refuses a triaxial + direct shear comparison: $msg"
 
 # The four-sand study report (scripts/study_report.py) on fabricated runs: a
 # study.json naming four sand runs and three damping runs.

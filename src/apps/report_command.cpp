@@ -136,7 +136,8 @@ Command add_report_command(CLI::App& app) {
       "write the HTML report of a run folder (RUN_DIR/report/index.html: stress ratio, dilation, displacement "
       "profile and shear band, rotation, coordination, contact-normal rose diagrams with Kanatani's density, "
       "fabric factor, force chains; paper Figs. 10-17), or with several run folders a comparison report "
-      "(RUN_A/../comparison/report/index.html). Needs Python 3 with matplotlib (python3-matplotlib)");
+      "(RUN_A/../comparison/report/index.html); several triaxial runs at different sigma_3 give Mohr circles "
+      "and a c', phi' fit (also in mohr_coulomb.json). Needs Python 3 with matplotlib (python3-matplotlib)");
   cmd->add_option("runs", o->runs, "run folder(s) written by `grainlab run` (series.csv, run.json, analysis/)");
   cmd->add_option("--out", o->out, "folder for index.html and the PNGs instead of the default");
   cmd->add_flag("--print-script", o->print_script, "print the embedded report script (scripts/report.py) and exit");
