@@ -27,10 +27,13 @@ inline void set_default_thread_count(int n) {
 
 // Calls f(i) for i in [0, n) on `threads` threads (0 = default). Chunks are
 // dynamic: loop bodies of uneven cost (narrowphase pairs) balance well; order
-// of calls is unspecified. Loops of at most one chunk run serially.
+// of calls is unspecified. Loops of at most one chunk, or of fewer than
+// min_parallel items, run serially: waking the threads costs tens of
+// microseconds, more than a few thousand cheap items take.
 template <typename F>
-void parallel_for(std::ptrdiff_t n, F&& f, std::ptrdiff_t chunk = 64, int threads = 0) {
-  if (n <= chunk) {
+void parallel_for(std::ptrdiff_t n, F&& f, std::ptrdiff_t chunk = 64, int threads = 0,
+                  std::ptrdiff_t min_parallel = 0) {
+  if (n <= chunk || n < min_parallel) {
     for (std::ptrdiff_t i = 0; i < n; ++i) f(i);
     return;
   }

@@ -112,6 +112,7 @@ class World {
   SweepAndPrune sap_;
   bool prepared_ = false;
   double checked_dt_ = -1;  // the step last checked against the critical step
+  bool spheres_only() const;  // every grain shape is a sphere: pair loops are cheap
   bool rebuild_due_ = true;  // compute_bounds found the candidate pairs due for a rebuild
   std::vector<Mat3> rot_;
   std::vector<Mat3> wall_rot_;  // wall rotations, as of the last broadphase

@@ -13,12 +13,12 @@ void StressServo::control(World& w, double dt) {
       k_walls += w.model.law->tangent_stiffness(c.normal_force, c.geo.depth);
   double outward_speed = -speed_limit_;  // not touching yet: come in at the limit
   if (k_walls > 0) {
-    const double gain = kAlpha * area_ / (k_walls * dt);
+    const double gain = alpha_ * area_ / (k_walls * dt);
     const double error = stress(w) - target_;
     const double v = gain * (error + integral_);
     outward_speed = std::clamp(v, -speed_limit_, speed_limit_);
     // Integral action only while the walls are free to follow (no wind-up at the clamp).
-    if (outward_speed == v) integral_ += kBeta * error;
+    if (outward_speed == v) integral_ += beta_ * error;
   } else {
     integral_ = 0;
   }

@@ -9,8 +9,10 @@
 // gives it (ContactLaw::tangent_stiffness: 1.5 f / delta for Hertz, f / delta
 // for Hooke). If the
 // specimen were a spring k_w, the stress would change by -alpha (e + I) per
-// step: alpha = 0.05 removes an error in about 1/alpha steps, slowly enough
-// for the stress to cross the specimen. A purely proportional servo following
+// step: alpha = 0.05 (the default) removes an error in about 1/alpha steps,
+// slowly enough for the stress to cross the specimen; the triaxial test's
+// side walls, which measure their own contacts, use 0.15 (lab/triaxial.h
+// has the measurements). A purely proportional servo following
 // a dilating specimen at speed u lags by e = u k_w dt / (alpha A), a few per
 // cent in shear; the integral term (beta = alpha / 10, overdamped:
 // beta < alpha / 4) removes that lag. The wall never moves faster than the
@@ -34,10 +36,11 @@ class StressServo {
       : StressServo({wall, wall}, 1, 2, -1.0, area, target, speed_limit) {}
   // Drives the first `count` (1 or 2) of `walls` as one along `axis` (0, 1,
   // 2), pushing the specimen towards `inward` (+1 or -1) on that axis.
+  // alpha: the proportional gain (kAlpha unless given); the integral's beta = alpha / 10.
   StressServo(std::array<Index, 2> walls, int count, int axis, double inward, double area, double target,
-              double speed_limit)
+              double speed_limit, double alpha = kAlpha)
       : walls_(walls), count_(count), axis_(axis), inward_(inward), area_(area), target_(target),
-        speed_limit_(speed_limit) {}
+        speed_limit_(speed_limit), alpha_(alpha), beta_(alpha / 10) {}
 
   // One control step: sets the walls' velocity along the axis from the forces of this step.
   void control(World& w, double dt);
@@ -58,14 +61,14 @@ class StressServo {
   void save(ByteWriter& out) const { out.f64(integral_); }
   void load(ByteReader& in) { integral_ = in.f64(); }
 
-  static constexpr double kAlpha = 0.05;
-  static constexpr double kBeta = 0.005;  // per step: integral time 200 steps (beta = alpha / 10)
+  static constexpr double kAlpha = 0.05;  // the default gain; beta = alpha / 10: integral time 200 steps
 
  private:
   std::array<Index, 2> walls_;
   int count_, axis_;
   double inward_;
   double area_, target_, speed_limit_;
+  double alpha_, beta_;
   double integral_ = 0;  // Pa
 };
 

@@ -106,7 +106,7 @@ TriaxialTest::TriaxialTest(const DirectShearSpec& spec) : ClosedBoxTest(spec) {
   cap_servo_ = StressServo(Cap, spec.box.length * spec.box.width, sigma3, limit);
   for (int k = 0; k < 4; ++k)
     side_servos_[k] = StressServo({kSides[k].lower, kSides[k].upper}, 2, kSides[k].axis, kSides[k].inward,
-                                  side_area(k), sigma3, limit);
+                                  side_area(k), sigma3, limit, kSideAlpha);
   // I = (v / H) d sqrt(rho S / sigma_3), H the target height.
   const double rho = spec.material.grain.density * world().model.density_scale;
   axial_speed_ = spec.numerics.inertial_number * spec.box.height / (prep_.mean_diameter() * std::sqrt(rho / sigma3));

@@ -51,9 +51,9 @@ TEST(Triaxial, SummaryOfKnownCurves) {
 
 TEST(Triaxial, BeadsHoldTheCellPressureAndTheIdentities) {
   // 240 beads, 6 d_max square, loose (e 0.80), sigma_3 50 kPa, to 4 % axial
-  // strain. Measured (seed 3): side stress error of the interval means 0.0077
-  // on average over the samples and 0.030 at worst (to 6 %: 0.0068 and 0.030;
-  // the material glass-beads preset to 12 %: 0.010 and 0.034).
+  // strain. Measured (seed 3): side stress error of the interval means
+  // 0.0016 on average over the samples and 0.0034 at worst (with the cap's
+  // gain 0.05 on the sides as well: 0.0077 and 0.030).
   DirectShearSpec spec = testing_support::loose_bead_spec("triaxial");
   spec.triaxial.final_strain = 0.04;
   spec.output.strain_interval = 0.002;
@@ -78,18 +78,79 @@ TEST(Triaxial, BeadsHoldTheCellPressureAndTheIdentities) {
     EXPECT_GT(r[1], rows[i - 1][1]);
     mean_error += r[8] / (rows.size() - 1);
     worst_error = std::max(worst_error, r[8]);
+    EXPECT_LT(r[8], 0.01);  // sigma_3 held within 1 % on every side at every sample
     EXPECT_GT(r[7], 0.0);  // compression: sigma_1 > sigma_3
   }
   // The cap moves at a constant speed: eps_a grows linearly in time.
   const double rate = rows.back()[1] / (rows.back()[0] - t0);  // axial strain per second
   EXPECT_NEAR(rate * (rows[10][0] - t0), rows[10][1], 1e-9);
   std::printf("side stress error: mean %.4f, worst %.4f\n", mean_error, worst_error);
-  // sigma_3 held: 1 % on average (the 1 % at every sample is not met
-  // in this 240-bead box, docs/triaxial.md), 5 % at worst.
-  EXPECT_LT(mean_error, 0.015);
-  EXPECT_LT(worst_error, 0.05);
   const TriaxialSummary s = summarise_triaxial(rows);
   EXPECT_GT(s.peak_friction_angle_deg, 10);
   EXPECT_LT(s.peak_friction_angle_deg, 45);
   EXPECT_GT(s.e50_Pa, 0);
+}
+
+namespace {
+
+// The mean of column `c` over the last fifth of the axial strain (the
+// summary's critical-state window).
+double last_fifth_mean(const std::vector<std::vector<double>>& rows, int c) {
+  double sum = 0;
+  int n = 0;
+  for (const auto& r : rows)
+    if (r[1] >= 0.8 * rows.back()[1]) sum += r[c], ++n;
+  return sum / n;
+}
+
+std::vector<std::vector<double>> bead_triaxial(double deposition_friction, double void_ratio) {
+  // 8 d_max square (6.7 mm), 5.1 mm high, sigma_3 50 kPa, to 35 % at I =
+  // 4.5e-3 (5 times the default, for test time: both specimens alike). At
+  // 6 d_max high (5.05 mm) the loose specimen's compaction never came to
+  // rest: a rattling bead spun at 412 rad/s on four barely loaded contacts,
+  // which point contacts without twisting friction cannot stop (the
+  // spinning-bead limitation of tests/lab/sphere_box.h).
+  DirectShearSpec s = testing_support::sphere_spec(8);
+  s.test = "triaxial";
+  s.box.height = 5.1e-3;
+  s.specimen.void_ratio = void_ratio;
+  s.specimen.tolerance = 0.2;  // the deposition friction decides
+  s.specimen.deposition_friction = deposition_friction;
+  s.consolidation.normal_stress = 50e3;
+  s.numerics.inertial_number = 4.5e-3;
+  s.triaxial.final_strain = 0.35;
+  s.output.strain_interval = 0.002;
+  TriaxialTest t(s);
+  while (t.advance(1000)) {
+  }
+  EXPECT_TRUE(t.done());
+  return t.series();
+}
+
+}  // namespace
+
+TEST(Triaxial, LooseAndDenseBeadsReachOneCriticalState) {
+  // The same beads deposited with friction 1.0 (loose) and 0 (dense).
+  // Measured (seed 3): e 0.821 and 0.718 after isotropic consolidation; the
+  // loose contracts (eps_v up to +1.3 %), the dense dilates (eps_v -5.9 %);
+  // over the last fifth e 0.815 and 0.813, q/p' 0.595 and 0.616 (phi_cs
+  // 15.6 and 16.1 deg; rigid frictionless walls, mu 0.19).
+  const auto loose = bead_triaxial(1.0, 0.85), dense = bead_triaxial(0.0, 0.60);
+  ASSERT_GT(loose.size(), 100u);
+  ASSERT_GT(dense.size(), 100u);
+  const double e_loose = loose[0][9], e_dense = dense[0][9];
+  const double e_cs_loose = last_fifth_mean(loose, 9), e_cs_dense = last_fifth_mean(dense, 9);
+  const double eta_loose = summarise_triaxial(loose).critical_stress_ratio;
+  const double eta_dense = summarise_triaxial(dense).critical_stress_ratio;
+  std::printf("e at shear %.4f / %.4f, over the last fifth %.4f / %.4f; critical q/p' %.4f / %.4f (loose / dense)\n",
+              e_loose, e_dense, e_cs_loose, e_cs_dense, eta_loose, eta_dense);
+  EXPECT_GT(e_loose - e_dense, 0.05);  // two different states
+  EXPECT_LT(e_cs_loose, e_loose);      // the loose contracts
+  EXPECT_GT(e_cs_dense, e_dense + 0.05);  // the dense dilates
+  // One critical state: the void ratios meet, and the stress ratios agree
+  // within 10 % (the criterion).
+  EXPECT_LT(std::abs(e_cs_loose - e_cs_dense), 0.2 * (e_loose - e_dense));
+  EXPECT_LT(std::abs(eta_loose - eta_dense), 0.1 * 0.5 * (eta_loose + eta_dense));
+  // The dense specimen peaks above its critical state.
+  EXPECT_GT(summarise_triaxial(dense).peak_stress_ratio, 1.15 * eta_dense);
 }
