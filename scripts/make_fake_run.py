@@ -347,6 +347,66 @@ def make_triaxial(a, out):
     return 0
 
 
+OEDOMETER_COLUMNS = ["time_s", "stage", "target_stress_Pa", "vertical_stress_Pa", "floor_stress_Pa",
+                     "lateral_stress_Pa", "K0", "vertical_strain", "cap_height_m", "void_ratio",
+                     "constrained_modulus_Pa", "coordination_number", "kinetic_energy_J", "unbalanced_force_ratio"]
+
+
+def make_oedometer(a, out):
+    """series.csv and run.json of an oedometer run (lab/oedometer.h) on e = e0 - Cc log10(s / 100 kPa) while
+    loading 100 -> 200 -> 400 -> 800 kPa and e = e(800) + Cs log10(800 kPa / s) unloading to 400, 200, 100 kPa
+    (Cc 0.035, Cs 0.02), K0 0.55 loading and 0.55 (800 kPa / s)^0.4 unloading. With --loading stages one row per
+    stage; with constant-rate 50 rows per decade of stress on the way to each stage's stress, the column stage
+    being the stage approached."""
+    rng = np.random.default_rng(a.seed)
+    cc, cs, e0 = 0.035, 0.02, 0.70
+    schedule = [200e3, 400e3, 800e3, 400e3, 200e3, 100e3]
+    e800 = e0 - cc * math.log10(8)
+    rows, h0 = [], H
+
+    def add(stage, target, s, loading):
+        e = e0 - cc * math.log10(s / 100e3) if loading else e800 + cs * math.log10(800e3 / s)
+        k0 = 0.55 if loading else 0.55 * (800e3 / s) ** 0.4
+        eps = (e0 - e) / (1 + e0)
+        m = float("nan") if not rows else (s - rows[-1][3]) / (eps - rows[-1][7])
+        rows.append([0.2 + 0.01 * len(rows), stage, target, s, s * (1 + 1e-4 * rng.standard_normal()), k0 * s, k0,
+                     eps, h0 * (1 - eps), e, m, 5.0 + 0.1 * rng.standard_normal(), 1e-9, 1e-3])
+
+    add(0, 100e3, 100e3, True)
+    previous = 100e3
+    for k, target in enumerate(schedule, start=1):
+        loading = target > previous
+        if a.loading == "constant-rate":
+            steps = max(1, int(round(50 * abs(math.log10(target / previous)))))
+            for j in range(1, steps):
+                add(k, target, previous * (target / previous) ** (j / steps), loading)
+        add(k, target, target, loading)
+        previous = target
+    write_csv(out / "series.csv", OEDOMETER_COLUMNS, np.array(rows))
+    run = {
+        "grainlab_version": "0.1.0",
+        "config": {"test": "oedometer", "seed": a.seed,
+                   "grains": {"preset": a.preset, "folder": "", "shapes": 24, "faces": 200,
+                              "d_min": 0.707e-3, "d_max": 0.841e-3},
+                   "material": {"preset": SAND_OF[a.preset], "density": 2650.0, "friction": PRESETS[a.preset]["mu"],
+                                "wall_friction": 0.0},
+                   "box": {"length": L, "width": W, "height": H, "gap": GAP},
+                   "consolidation": {"normal_stress": 100e3, "tolerance": 0.01, "max_unbalanced": 0.01},
+                   "oedometer": {"stresses": schedule, "loading": a.loading},
+                   "numerics": {"inertial_number": 9e-4, "threads": 0},
+                   "output": {"folder": str(out), "strain_interval": 0.001}},
+        "seed": a.seed, "grains": 1000, "phase": "done", "mean_equivalent_diameter_m": D_MEAN,
+        "preparation": {"void_ratio": e0, "relative_density": 0.5},
+        "oedometer": {"compression_index": cc, "swelling_index": cs, "max_stress_Pa": 800e3,
+                      "K0_at_max_stress": 0.55, "constrained_modulus_at_max_stress_Pa": rows[3][10] if
+                      a.loading == "stages" else None, "modulus_stress_exponent": 0.5,
+                      "final_void_ratio": rows[-1][9]},
+        "timings": {"wall_s": 120.0, "steps": 100000, "simulated_s": rows[-1][0]},
+    }
+    (out / "run.json").write_text(json.dumps(run, indent=2) + "\n")
+    return 0
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("out", help="run folder to create (created if missing; files overwritten)")
@@ -355,7 +415,9 @@ def main(argv=None):
     ap.add_argument("--no-analysis", action="store_true",
                     help="write only series.csv (without the analysis columns) and run.json")
     ap.add_argument("--no-roundness", action="store_true", help="leave mean_roundness out of run.json")
-    ap.add_argument("--test", default="direct-shear", choices=["direct-shear", "triaxial"],
+    ap.add_argument("--loading", default="stages", choices=["stages", "constant-rate"],
+                    help="oedometer (--test oedometer): stages held to rest, or a constant rate of strain")
+    ap.add_argument("--test", default="direct-shear", choices=["direct-shear", "triaxial", "oedometer"],
                     help="the lab test of the run (triaxial: series.csv and run.json only)")
     tx = ap.add_argument_group("triaxial (--test triaxial): the envelopes the run's peak and critical state lie on")
     tx.add_argument("--sigma3", type=float, default=100.0, metavar="KPA", help="cell pressure sigma_3, kPa")
@@ -364,10 +426,10 @@ def main(argv=None):
     tx.add_argument("--phi-cs", type=float, default=31.0, metavar="DEG", help="critical-state phi', deg")
     tx.add_argument("--cohesion-cs", type=float, default=0.0, metavar="KPA", help="critical-state c', kPa")
     a = ap.parse_args(argv)
-    if a.test == "triaxial":
+    if a.test in ("triaxial", "oedometer"):
         out = Path(a.out)
         out.mkdir(parents=True, exist_ok=True)
-        return make_triaxial(a, out)
+        return (make_triaxial if a.test == "triaxial" else make_oedometer)(a, out)
 
     P = PRESETS[a.preset]
     rng = np.random.default_rng(a.seed)

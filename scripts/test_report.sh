@@ -157,6 +157,27 @@ set -e
 [ "$rc" -ne 0 ] && grep -q "run.json" <<<"$msg" || fail "a folder without run.json was not refused clearly: $msg"
 pass "refuses a folder without run.json: $msg"
 
+# --- oedometer: stages and a constant rate of strain --------------------------------
+oedometer_pngs=(e_log_sigma.png k0.png constrained_modulus.png)
+for loading in stages constant-rate; do
+  "$PY" "$here/make_fake_run.py" "$tmp/oed/$loading" --test oedometer --loading "$loading" >/dev/null \
+    || fail "make_fake_run.py --test oedometer --loading $loading failed"
+  "$PY" "$here/report.py" "$tmp/oed/$loading" >/dev/null || fail "report.py failed on an oedometer run ($loading)"
+  check_report "$tmp/oed/$loading/report" "${oedometer_pngs[@]}"
+  if grep -q "not available" "$tmp/oed/$loading/report/index.html"; then
+    fail "the oedometer report ($loading) says something is not available"
+  fi
+done
+# Seven stages (consolidation and six); at a constant rate many rows, of which the stages' ends are seven.
+grep -q "<td>7 / 7</td>" "$tmp/oed/stages/report/index.html" || fail "the staged oedometer report does not count 7 stages in 7 rows"
+rows="$(($(wc -l < "$tmp/oed/constant-rate/series.csv") - 1))"
+[ "$rows" -gt 50 ] || fail "the fake constant-rate oedometer has only $rows rows"
+grep -q "<td>7 / $rows</td>" "$tmp/oed/constant-rate/report/index.html" \
+  || fail "the constant-rate oedometer report does not find the 7 stages' ends among its $rows rows"
+grep -q "constant rate of strain" "$tmp/oed/constant-rate/report/index.html" \
+  || fail "the constant-rate oedometer report does not say how it was loaded"
+pass "oedometer reports: stages and a constant rate of strain, each stage's end found"
+
 # --- triaxial: one run, a comparison with Mohr circles, refusals --------------------
 # Three fake runs at 50, 100 and 200 kPa whose peak lies on tau = 5 kPa + sigma' tan 34 deg and whose
 # critical state lies on tau = sigma' tan 31 deg (make_fake_run.py builds q/p' for them).
