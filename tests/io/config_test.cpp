@@ -83,6 +83,11 @@ TEST(Config, OedometerScheduleIsAListOfPositiveStresses) {
   EXPECT_TRUE(has(msg, "expects a list of numbers")) << msg;
   msg = parse_error("[oedometer]\nstresses = [1e5, nan]\n");
   EXPECT_TRUE(has(msg, "a list of finite numbers")) << msg;
+  EXPECT_EQ(s.oedometer.loading, "stages");
+  EXPECT_EQ(parse_config("[oedometer]\nloading = \"constant-rate\"\n", "o.toml").oedometer.loading, "constant-rate");
+  msg = parse_error("[oedometer]\nloading = \"fast\"\n");
+  EXPECT_TRUE(has(msg, "oedometer.loading = \"fast\" is impossible")) << msg;
+  EXPECT_TRUE(has(msg, "\"stages\" or \"constant-rate\"")) << msg;
   msg = parse_error("test = \"simple-shear\"\n");
   EXPECT_TRUE(has(msg, "test = \"simple-shear\" is impossible")) << msg;
   EXPECT_TRUE(has(msg, "\"direct-shear\", \"oedometer\", \"triaxial\"")) << msg;
