@@ -187,6 +187,18 @@ TRIAXIAL_COLUMNS = ["time_s", "axial_strain", "volumetric_strain", "axial_stress
 # (src/lab/triaxial.cpp triaxial_series_columns(), in its order.)
 
 
+def grains_material_box(a):
+    """run.json's config.grains, config.material and config.box of a fake run of grain class a.preset."""
+    return {
+        "grains": {"preset": a.preset, "folder": "", "shapes": 24, "faces": 500, "d_min": 0.707e-3, "d_max": 0.841e-3},
+        "material": {"preset": SAND_OF[a.preset], "contact_law": "hertz-material", "density": 2650.0,
+                     "friction": PRESETS[a.preset]["mu"], "youngs_modulus": 4e9, "poisson_ratio": 0.3,
+                     "restitution": 0.5, "k_n": 1e12, "k_t": 8e11, "gamma_n": 40.0, "gamma_t": 20.0,
+                     "wall_friction": 0.0},
+        "box": {"length": L, "width": W, "height": H, "gap": GAP},
+    }
+
+
 def eta_of_mohr_coulomb(sigma3, phi_deg, c):
     """q/p' of triaxial compression at failure on tau = c + sigma tan(phi), at cell pressure sigma3 (Pa):
     sigma_1 = sigma_3 K_p + 2 c sqrt(K_p), K_p = (1 + sin phi) / (1 - sin phi)."""
@@ -305,13 +317,7 @@ def make_triaxial(a, out):
         "config": {
             "test": "triaxial",
             "seed": a.seed,
-            "grains": {"preset": a.preset, "folder": "", "shapes": 24, "faces": 500,
-                       "d_min": 0.707e-3, "d_max": 0.841e-3},
-            "material": {"preset": SAND_OF[a.preset], "contact_law": "hertz-material", "density": 2650.0,
-                         "friction": P["mu"], "youngs_modulus": 4e9, "poisson_ratio": 0.3,
-                         "restitution": 0.5, "k_n": 1e12, "k_t": 8e11, "gamma_n": 40.0, "gamma_t": 20.0,
-                         "wall_friction": 0.0},
-            "box": {"length": L, "width": W, "height": H, "gap": GAP},
+            **grains_material_box(a),
             "specimen": {"relative_density": 0.96, "indices": "own", "own_e_max": 0.0, "own_e_min": 0.0,
                          "e_max": 0.86, "e_min": 0.53, "void_ratio": -1.0, "tolerance": 0.02,
                          "relative_density_tolerance": 0.05, "deposition_friction": 0.05},
@@ -386,11 +392,7 @@ def make_oedometer(a, out):
     run = {
         "grainlab_version": "0.1.0",
         "config": {"test": "oedometer", "seed": a.seed,
-                   "grains": {"preset": a.preset, "folder": "", "shapes": 24, "faces": 200,
-                              "d_min": 0.707e-3, "d_max": 0.841e-3},
-                   "material": {"preset": SAND_OF[a.preset], "density": 2650.0, "friction": PRESETS[a.preset]["mu"],
-                                "wall_friction": 0.0},
-                   "box": {"length": L, "width": W, "height": H, "gap": GAP},
+                   **grains_material_box(a),
                    "consolidation": {"normal_stress": 100e3, "tolerance": 0.01, "max_unbalanced": 0.01},
                    "oedometer": {"stresses": schedule, "loading": a.loading},
                    "numerics": {"inertial_number": 9e-4, "threads": 0},
@@ -515,13 +517,7 @@ def main(argv=None):
         "grainlab_version": "0.1.0",
         "config": {
             "seed": a.seed,
-            "grains": {"preset": a.preset, "folder": "", "shapes": 24, "faces": 500,
-                       "d_min": 0.707e-3, "d_max": 0.841e-3},
-            "material": {"preset": SAND_OF[a.preset], "contact_law": "hertz-material", "density": 2650.0,
-                         "friction": P["mu"], "youngs_modulus": 4e9, "poisson_ratio": 0.3,
-                         "restitution": 0.5, "k_n": 1e12, "k_t": 8e11, "gamma_n": 40.0, "gamma_t": 20.0,
-                         "wall_friction": 0.0},
-            "box": {"length": L, "width": W, "height": H, "gap": GAP},
+            **grains_material_box(a),
             "specimen": {"relative_density": 0.96, "e_max": 0.86, "e_min": 0.53, "void_ratio": -1.0,
                          "tolerance": 0.02, "deposition_friction": 0.05},
             "consolidation": {"normal_stress": SIGMA_N, "tolerance": 0.01, "max_unbalanced": 0.1},

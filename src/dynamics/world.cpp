@@ -24,14 +24,6 @@ namespace grainlab {
 
 namespace {
 
-// Loops of cheap items (contact forces, integration, bounds, and every
-// per-pair loop when all grains are spheres) run serially below this many
-// items: waking a second thread costs tens of microseconds per loop, and a
-// step has about eight loops. Measured on 510 glass beads (the triaxial
-// test's 8 d_max box), 2 threads took 23.3 s against 12.7 s for 1 thread
-// before this threshold.
-constexpr std::ptrdiff_t kMinParallelCheap = 4096;
-
 // Keeps the warm-start caches of pairs that survive from `old_pairs` into
 // `pairs` (both sorted by key): a merge join, no hashing.
 void carry_history(const std::vector<CandidatePair>& old_pairs, std::vector<CandidatePair>& pairs) {
@@ -218,7 +210,7 @@ void World::compute_bounds() {
         rot_[i] = state.bodies[i].q.toRotationMatrix();
         return have_ref ? (state.bodies[i].x - state.x_at_rebuild[i]).squaredNorm() : 0.0;
       },
-      0.0, kMinParallelCheap, settings.threads);
+      0.0, settings.serial_below, settings.threads);
   const double max_move_sq = have_ref ? max_sq : std::numeric_limits<double>::infinity();
   // Grain bounds (bounding sphere plus half the skin) only when the candidate
   // pairs are due for a rebuild: a grain has moved more than skin/2.
@@ -330,7 +322,7 @@ void World::collide_list(std::vector<CandidatePair>& pairs, bool walls, std::vec
           if (local[r].geo.touching) out[touching++] = local[r];
         sub_counts_[k] = touching;
       },
-      32, settings.threads, spheres_only() ? kMinParallelCheap : 0);
+      32, settings.threads, spheres_only() ? settings.serial_below : 0);
   // Each pair's place in the new list: an exclusive prefix sum, so the list is
   // sorted by (a, b, sub) as the pairs are by (a, b), whatever the threads.
   std::size_t total = 0;
@@ -367,7 +359,7 @@ void World::collide_list(std::vector<CandidatePair>& pairs, bool walls, std::vec
           next_contacts_[i] = c;
         }
       },
-      64, settings.threads, spheres_only() ? kMinParallelCheap : 0);
+      64, settings.threads, spheres_only() ? settings.serial_below : 0);
   contacts.swap(next_contacts_);
 }
 
@@ -407,7 +399,7 @@ void World::forces_with(double dt) {
                   ma.mass * mb.mass / (ma.mass + mb.mass), ma.radius * mb.radius / (ma.radius + mb.radius), dt);
   };
   parallel_for(static_cast<std::ptrdiff_t>(state.contacts.size()), grain_pair, 128, settings.threads,
-               kMinParallelCheap);
+               settings.serial_below);
 
   // Walls: infinite mass and radius, translating at their prescribed velocity.
   const auto wall_pair = [&](std::ptrdiff_t k) {
@@ -419,7 +411,7 @@ void World::forces_with(double dt) {
                   (sb.v + sb.w.cross(p - sb.x)) - state.walls[pc.a].v, sb.w, mb.mass, mb.radius, dt);
   };
   parallel_for(static_cast<std::ptrdiff_t>(state.wall_contacts.size()), wall_pair, 128, settings.threads,
-               kMinParallelCheap);
+               settings.serial_below);
 
   // Serial sums in contact order: independent of the thread count.
   const std::size_t n = state.bodies.size();
@@ -459,7 +451,7 @@ void World::integrate(double dt) {
     integrate_rotation(s.q, s.w, torque_[i], m.inertia, m.inv_inertia, dt, isotropic);
     kinetic_[i] = kinetic_energy_of(m, s);
   };
-  parallel_for(static_cast<std::ptrdiff_t>(n), body, 256, settings.threads, kMinParallelCheap);
+  parallel_for(static_cast<std::ptrdiff_t>(n), body, 256, settings.threads, settings.serial_below);
   for (WallState& w : state.walls) w.x += dt * w.v;
 }
 

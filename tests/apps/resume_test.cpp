@@ -94,6 +94,35 @@ class Resume : public ::testing::Test {
                      << "[output]\nsnapshot_interval = 0.004\nfolder = \"" << (dir_ / name).string() << "\"\n";
     return p;
   }
+  // Runs the test of `test_block` straight through (folder "straight") and,
+  // beside it, the same run killed by SIGTERM once its series.csv has
+  // `lines` lines, then resumed (folder "killed"); no report (only the files
+  // matter). Returns the straight run's series.csv.
+  std::string straight_and_resumed(const std::string& test_block, std::size_t lines) {
+    ::setenv("GRAINLAB_PYTHON", "/nonexistent/python3", 1);
+    const pid_t straight = start_run(config("straight", test_block), false, dir_ / "straight.log");
+    const fs::path killed = config("killed", test_block);
+    const fs::path series = dir_ / "killed" / "series.csv";
+    const pid_t pid = start_run(killed, false, dir_ / "killed.log");
+    EXPECT_GT(straight, 0);
+    EXPECT_GT(pid, 0);
+    while (lines_in(series) < lines) {
+      int status = 0;
+      if (waitpid(pid, &status, WNOHANG) != 0) {
+        ADD_FAILURE() << "the run ended early: " << read_file(dir_ / "killed.log");
+        break;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    kill(pid, SIGTERM);
+    EXPECT_EQ(wait_exit(pid), 130) << read_file(dir_ / "killed.log");
+    EXPECT_EQ(wait_exit(straight), 0) << read_file(dir_ / "straight.log");
+    EXPECT_LT(lines_in(series), lines_in(dir_ / "straight" / "series.csv")) << "killed after the end";
+    EXPECT_EQ(wait_exit(start_run(killed, true, dir_ / "resumed.log")), 0) << read_file(dir_ / "resumed.log");
+    ::unsetenv("GRAINLAB_PYTHON");
+    EXPECT_NE(read_file(dir_ / "resumed.log").find("resuming at step"), std::string::npos);
+    return read_file(dir_ / "straight" / "series.csv");
+  }
   fs::path dir_;
 };
 
@@ -144,60 +173,22 @@ TEST_F(Resume, KilledDuringShearThenResumedGivesTheSameSeries) {
 }
 
 TEST_F(Resume, OedometerKilledBetweenStagesThenResumedGivesTheSameSeries) {
-  const std::string stresses = "test = \"oedometer\"\n[oedometer]\nstresses = [150e3, 200e3, 300e3]";
-  ::setenv("GRAINLAB_PYTHON", "/nonexistent/python3", 1);  // no report: only the series matter here
-  const pid_t straight = start_run(config("straight", stresses), false, dir_ / "straight.log");
-  const fs::path killed = config("killed", stresses);
-  const fs::path series = dir_ / "killed" / "series.csv";
-  const pid_t pid = start_run(killed, false, dir_ / "killed.log");
-  ASSERT_GT(straight, 0);
-  ASSERT_GT(pid, 0);
-  while (lines_in(series) < 3) {  // the header, stage 0 and stage 1
-    int status = 0;
-    ASSERT_EQ(waitpid(pid, &status, WNOHANG), 0) << "the run ended early: " << read_file(dir_ / "killed.log");
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  }
-  kill(pid, SIGTERM);
-  ASSERT_EQ(wait_exit(pid), 130) << read_file(dir_ / "killed.log");
-  ASSERT_EQ(wait_exit(straight), 0) << read_file(dir_ / "straight.log");
-  const std::string expected = read_file(dir_ / "straight" / "series.csv");
-  ASSERT_EQ(lines_in(dir_ / "straight" / "series.csv"), 5u) << expected;  // header and stages 0-3
-  ASSERT_EQ(expected.rfind("time_s,stage,target_stress_Pa,vertical_stress_Pa", 0), 0u) << expected;
-  EXPECT_LT(lines_in(series), 5u) << "killed after the end";
-  ASSERT_EQ(wait_exit(start_run(killed, true, dir_ / "resumed.log")), 0) << read_file(dir_ / "resumed.log");
-  ::unsetenv("GRAINLAB_PYTHON");
-  EXPECT_NE(read_file(dir_ / "resumed.log").find("resuming at step"), std::string::npos);
-  EXPECT_EQ(read_file(series), expected);
+  const std::string straight = straight_and_resumed(
+      "test = \"oedometer\"\n[oedometer]\nstresses = [150e3, 200e3, 300e3]", 3);  // header, stages 0 and 1
+  ASSERT_EQ(lines_in(dir_ / "straight" / "series.csv"), 5u) << straight;  // header and stages 0-3
+  ASSERT_EQ(straight.rfind("time_s,stage,target_stress_Pa,vertical_stress_Pa", 0), 0u) << straight;
+  EXPECT_EQ(read_file(dir_ / "killed" / "series.csv"), straight);
   const std::string run_json = read_file(dir_ / "killed" / "run.json");
   EXPECT_NE(run_json.find("\"compression_index\""), std::string::npos) << run_json;
   EXPECT_NE(run_json.find("\"test\": \"oedometer\""), std::string::npos) << run_json;
 }
 
 TEST_F(Resume, TriaxialKilledDuringShearThenResumedGivesTheSameSeries) {
-  const std::string block = "test = \"triaxial\"\n[triaxial]\nfinal_strain = 0.02";
-  ::setenv("GRAINLAB_PYTHON", "/nonexistent/python3", 1);  // no report: only the series matter here
-  const pid_t straight = start_run(config("straight", block), false, dir_ / "straight.log");
-  const fs::path killed = config("killed", block);
-  const fs::path series = dir_ / "killed" / "series.csv";
-  const pid_t pid = start_run(killed, false, dir_ / "killed.log");
-  ASSERT_GT(straight, 0);
-  ASSERT_GT(pid, 0);
-  while (lines_in(series) < 5) {  // the header and four samples of shear
-    int status = 0;
-    ASSERT_EQ(waitpid(pid, &status, WNOHANG), 0) << "the run ended early: " << read_file(dir_ / "killed.log");
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  }
-  kill(pid, SIGTERM);
-  ASSERT_EQ(wait_exit(pid), 130) << read_file(dir_ / "killed.log");
-  ASSERT_EQ(wait_exit(straight), 0) << read_file(dir_ / "straight.log");
-  const std::string expected = read_file(dir_ / "straight" / "series.csv");
-  ASSERT_EQ(expected.rfind("time_s,axial_strain,volumetric_strain", 0), 0u) << expected;
-  ASSERT_GT(lines_in(dir_ / "straight" / "series.csv"), 15u) << expected;  // a sample every 0.1 % to 2 %
-  EXPECT_LT(lines_in(series), lines_in(dir_ / "straight" / "series.csv")) << "killed after the end";
-  ASSERT_EQ(wait_exit(start_run(killed, true, dir_ / "resumed.log")), 0) << read_file(dir_ / "resumed.log");
-  ::unsetenv("GRAINLAB_PYTHON");
-  EXPECT_NE(read_file(dir_ / "resumed.log").find("resuming at step"), std::string::npos);
-  EXPECT_EQ(read_file(series), expected);
+  const std::string straight =
+      straight_and_resumed("test = \"triaxial\"\n[triaxial]\nfinal_strain = 0.02", 5);  // header, 4 samples
+  ASSERT_EQ(straight.rfind("time_s,axial_strain,volumetric_strain", 0), 0u) << straight;
+  ASSERT_GT(lines_in(dir_ / "straight" / "series.csv"), 15u) << straight;  // a sample every 0.1 % to 2 %
+  EXPECT_EQ(read_file(dir_ / "killed" / "series.csv"), straight);
   const std::string run_json = read_file(dir_ / "killed" / "run.json");
   EXPECT_NE(run_json.find("\"peak_friction_angle_deg\""), std::string::npos) << run_json;
 }

@@ -66,6 +66,7 @@ TEST(SettlingBed, OneTwoAndThreeThreadsGiveIdenticalStates) {
   const auto run = [&](int threads) {
     SettlingBed bed = make_settling_bed(spec);
     bed.world.settings.threads = threads;
+    bed.world.settings.serial_below = 0;  // every loop in parallel, however few its items
     bed.world.model.gravity *= 20;  // the lattice lands and piles up in few steps
     const double dt = 0.2 * bed.world.critical_time_step();
     const int steps = static_cast<int>(0.03 / dt);
