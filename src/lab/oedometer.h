@@ -13,8 +13,13 @@
 // 1e-2 of the contacts' elastic energy for kCalmChecks checks in a row, and
 // the unbalanced-force ratio of the grains' resultants averaged over that
 // calm run below consolidation.max_unbalanced. A stress below the one
-// before unloads. One series row is recorded at rest at the end of every
-// stage, the consolidated state first (stage 0).
+// before unloads. The servo moves the cap no faster than the constant-rate
+// speed below (a stage is a quasi-static load, then a hold: at the
+// preparation's speed limit, about 1000 times faster, each stage was a
+// sudden load or release that rearranged the grains, K0 0.68 against 0.61
+// at 200 kPa in tests/lab/oedometer_test.cpp's specimen). One series row is
+// recorded at rest at the end of every stage, the consolidated state first
+// (stage 0).
 //
 // Constant rate of strain (oedometer.loading = "constant-rate", ASTM D4186
 // in spirit): the cap moves at the constant speed v = I H_0 / (d
