@@ -109,7 +109,7 @@ void DirectShearTest::apply_phase_overrides() {
 
 void DirectShearTest::enter(ShearPhase p) {
   p_.phase = p;
-  p_.calm.reset();
+  p_.rest.restart();
   p_.phase_start_step[static_cast<int>(p)] = world_.state.step;
   apply_phase_overrides();
   if (p == ShearPhase::Compact) lower_cap_onto_grains(world_, Cap, mean_diameter());
@@ -135,27 +135,15 @@ bool DirectShearTest::check_rest(ShearPhase p) {
     const double tolerance = p == ShearPhase::Consolidate ? c.tolerance : std::max(c.tolerance, 0.05);
     calm = std::abs(normal_stress() / c.normal_stress - 1) <= tolerance && kinetic_small_against_elastic(world_);
   }
-  bool rest = p_.calm.check(calm);
-  // The consolidation also needs the static balance: each grain's resultant
-  // averaged over the whole calm run (kCalmChecks x kCheckEvery steps). The
-  // window spans the run rather than one check interval because the packing
-  // rings in collective modes longer than 50 steps: in the tiny test box the
-  // ratio averaged over 50 steps swings up to 0.014 while over 1000 steps it
-  // is 0.0008.
-  const double averaged_unbalanced = p_.window.averaged_ratio(world_);
-  const int window = p_.window.steps();
-  if (rest && p == ShearPhase::Consolidate && averaged_unbalanced > spec_.consolidation.max_unbalanced) {
-    p_.calm.reset();
-    rest = false;
-  }
-  if (p_.calm.count() == 0 || rest) p_.window.reset();
+  // The consolidation also needs the static balance (RestRun, rest_criteria.h).
+  const bool rest = p_.rest.check(calm, world_, spec_.consolidation.max_unbalanced, p == ShearPhase::Consolidate);
   const std::int64_t in_phase = world_.state.step - phase_step(p);
   if (!rest && in_phase > 400000)
     throw RunError(fmt::format(
         "the {} phase did not come to rest in {} steps (normal stress {:.4g} Pa, unbalanced force "
         "ratio {:.3g} averaged over {} steps, kinetic energy {:.3g} J; {}): try a smaller time step, "
         "more damping (lower restitution) or a larger consolidation.max_unbalanced",
-        shear_phase_name(p), in_phase, normal_stress(), averaged_unbalanced, window, world_.kinetic_energy(),
+        shear_phase_name(p), in_phase, normal_stress(), p_.rest.last_ratio(), p_.rest.last_steps(), world_.kinetic_energy(),
         most_energetic_grain(world_)));
   return rest;
 }
@@ -202,7 +190,7 @@ bool DirectShearTest::advance(int max_steps) {
       if (sampled) return true;
       continue;
     }
-    p_.window.add(world_.body_forces());
+    p_.rest.add(world_.body_forces());
     if (world_.state.step % kCheckEvery != 0 || !check_rest(p)) continue;
     if (p == ShearPhase::Compact) {
       p_.compacted_void_ratio = void_ratio();

@@ -124,8 +124,7 @@ class DirectShearTest final : public LabTest {
  private:
   struct Progress {
     ShearPhase phase = ShearPhase::Deposit;
-    CalmCounter calm;
-    ForceWindow window;
+    RestRun rest;
     double compacted_void_ratio = 0;
     double compacted_bulk_void_ratio = 0;
     double cap_z_at_shear = 0;

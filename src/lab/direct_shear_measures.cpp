@@ -174,8 +174,7 @@ BandGeometry DirectShearTest::band_geometry() const {
 std::vector<std::uint8_t> DirectShearTest::save() const {
   ByteWriter b;
   b.i32(static_cast<std::int32_t>(p_.phase));
-  p_.calm.save(b);
-  p_.window.save(b);
+  p_.rest.save(b);
   servo_.save(b);
   b.f64(p_.compacted_void_ratio), b.f64(p_.compacted_bulk_void_ratio), b.f64(p_.cap_z_at_shear), b.f64(p_.upper_x_at_shear);
   b.f64(p_.next_sample_strain);
@@ -192,8 +191,7 @@ void DirectShearTest::load(std::span<const std::uint8_t> bytes) {
   const std::int32_t phase = r.i32();
   if (phase < 0 || phase > static_cast<int>(ShearPhase::Done)) r.corrupted("an unknown phase");
   p_.phase = static_cast<ShearPhase>(phase);
-  p_.calm.load(r);
-  p_.window.load(r);
+  p_.rest.load(r);
   servo_.load(r);
   p_.compacted_void_ratio = r.f64(), p_.compacted_bulk_void_ratio = r.f64(), p_.cap_z_at_shear = r.f64(), p_.upper_x_at_shear = r.f64();
   p_.next_sample_strain = r.f64();

@@ -147,8 +147,7 @@ void OedometerTest::start_loading() {
 void OedometerTest::start_stage(int stage) {
   p_.stage = stage;
   p_.stage_start_step = world().state.step;
-  p_.calm.reset();
-  p_.window.reset();
+  p_.rest.reset();
   servo_ = stage_servo(stage);
   if (constant_rate()) {  // down to load, up to unload
     const bool unload = stage_stress(stage) < stage_stress(stage - 1);
@@ -202,12 +201,7 @@ bool OedometerTest::stage_at_rest() {
   const auto& c = spec_.consolidation;
   const bool calm =
       std::abs(vertical_stress() / stage_stress(p_.stage) - 1) <= c.tolerance && kinetic_small_against_elastic(world());
-  bool rest = p_.calm.check(calm);
-  if (rest && p_.window.averaged_ratio(world()) > c.max_unbalanced) {
-    p_.calm.reset();
-    rest = false;
-  }
-  if (p_.calm.count() == 0 || rest) p_.window.reset();
+  const bool rest = p_.rest.check(calm, world(), c.max_unbalanced);
   const std::int64_t in_stage = world().state.step - p_.stage_start_step;
   if (!rest && in_stage > kMaxStageSteps)
     throw RunError(fmt::format(
@@ -228,7 +222,7 @@ bool OedometerTest::advance(int max_steps) {
   World& w = world();
   for (int i = 0; i < max_steps; ++i) {
     w.step(time_step());
-    p_.window.add(w.body_forces());
+    p_.rest.add(w.body_forces());
     if (w.state.step % kCheckEvery != 0 || !stage_at_rest()) continue;
     record_row();
     if (p_.stage == stages()) {
@@ -325,8 +319,7 @@ std::vector<std::uint8_t> OedometerTest::save() const {
   b.i32(static_cast<std::int32_t>(p_.phase));
   b.i32(p_.stage);
   b.f64(p_.height_at_load), b.f64(p_.last_row_stress);
-  p_.calm.save(b);
-  p_.window.save(b);
+  p_.rest.save(b);
   servo_.save(b);
   b.i64(p_.load_start_step), b.i64(p_.stage_start_step);
   b.u64(p_.rows.size());
@@ -346,8 +339,7 @@ void OedometerTest::load(std::span<const std::uint8_t> bytes) {
   p_.height_at_load = r.f64(), p_.last_row_stress = r.f64();
   if (p_.phase != OedometerPhase::Prepare) set_cap_speed();  // the cap's velocity is the world's, restored
   if (p_.phase == OedometerPhase::Load) servo_ = stage_servo(p_.stage);  // its target; its integral next
-  p_.calm.load(r);
-  p_.window.load(r);
+  p_.rest.load(r);
   servo_.load(r);
   p_.load_start_step = r.i64(), p_.stage_start_step = r.i64();
   p_.rows.resize(r.count(8));

@@ -132,8 +132,7 @@ class OedometerTest final : public ClosedBoxTest {
   struct Progress {
     OedometerPhase phase = OedometerPhase::Prepare;
     std::int32_t stage = 0;
-    CalmCounter calm;
-    ForceWindow window;
+    RestRun rest;
     double height_at_load = 0;      // m, H_0
     double last_row_stress = 0;     // Pa, sigma_v of the last row (constant rate)
     std::int64_t load_start_step = 0;

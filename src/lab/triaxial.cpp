@@ -178,8 +178,7 @@ std::string TriaxialTest::phase_name() const {
 void TriaxialTest::enter(TriaxialPhase p) {
   p_.phase = p;
   p_.phase_start_step = world().state.step;
-  p_.calm.reset();
-  p_.window.reset();
+  p_.rest.reset();
   auto& walls = world().state.walls;
   if (p == TriaxialPhase::Shear) {
     p_.shear_start_step = world().state.step;
@@ -199,12 +198,7 @@ bool TriaxialTest::isotropic_at_rest() {
   const double target = c.normal_stress;
   bool stresses = std::abs(axial_stress() / target - 1) <= c.tolerance;
   for (int k = 0; k < 4; ++k) stresses = stresses && std::abs(side_stress(k) / target - 1) <= c.tolerance;
-  bool rest = p_.calm.check(stresses && kinetic_small_against_elastic(world()));
-  if (rest && p_.window.averaged_ratio(world()) > c.max_unbalanced) {
-    p_.calm.reset();
-    rest = false;
-  }
-  if (p_.calm.count() == 0 || rest) p_.window.reset();
+  const bool rest = p_.rest.check(stresses && kinetic_small_against_elastic(world()), world(), c.max_unbalanced);
   const std::int64_t in_phase = world().state.step - p_.phase_start_step;
   if (!rest && in_phase > kMaxIsotropicSteps)
     throw RunError(fmt::format(
@@ -251,7 +245,7 @@ bool TriaxialTest::advance(int max_steps) {
       if (sampled) return true;
       continue;
     }
-    p_.window.add(w.body_forces());
+    p_.rest.add(w.body_forces());
     if (w.state.step % kCheckEvery != 0 || !isotropic_at_rest()) continue;
     enter(TriaxialPhase::Shear);
     return true;
@@ -339,8 +333,7 @@ std::vector<std::uint8_t> TriaxialTest::save() const {
   ByteWriter b;
   save_preparation(b);
   b.i32(static_cast<std::int32_t>(p_.phase));
-  p_.calm.save(b);
-  p_.window.save(b);
+  p_.rest.save(b);
   cap_servo_.save(b);
   for (const StressServo& s : side_servos_) s.save(b);
   b.f64(p_.height_at_shear), b.f64(p_.volume_at_shear), b.f64(p_.next_sample_strain);
@@ -359,8 +352,7 @@ void TriaxialTest::load(std::span<const std::uint8_t> bytes) {
   const std::int32_t phase = r.i32();
   if (phase < 0 || phase > static_cast<int>(TriaxialPhase::Done)) r.corrupted("an unknown phase");
   p_.phase = static_cast<TriaxialPhase>(phase);
-  p_.calm.load(r);
-  p_.window.load(r);
+  p_.rest.load(r);
   cap_servo_.load(r);
   for (StressServo& s : side_servos_) s.load(r);
   p_.height_at_shear = r.f64(), p_.volume_at_shear = r.f64(), p_.next_sample_strain = r.f64();

@@ -131,8 +131,7 @@ class TriaxialTest final : public ClosedBoxTest {
  private:
   struct Progress {
     TriaxialPhase phase = TriaxialPhase::Prepare;
-    CalmCounter calm;
-    ForceWindow window;
+    RestRun rest;
     double height_at_shear = 0, volume_at_shear = 0;
     double next_sample_strain = 0;
     std::array<double, 4> side_stress_sum{};  // Pa x steps since the last sample (shear)

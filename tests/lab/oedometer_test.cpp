@@ -193,19 +193,26 @@ TEST(Oedometer, ConstantRateOfStrainFollowsTheStagedCurve) {
   for (std::size_t i = 0; i < rows.size(); ++i) {
     SCOPED_TRACE(i);
     const auto& r = rows[i];
-    if (i > 0) EXPECT_GE(r[1], rows[i - 1][1]);
+    if (i > 0) {
+      EXPECT_GE(r[1], rows[i - 1][1]);
+    }
     EXPECT_NEAR(r[7], 1 - r[8] / h0, 1e-12);
     EXPECT_NEAR((e0 - r[9]) / (1 + e0), r[7], 1e-12);
     // Loading: the cap comes down at the constant speed.
-    if (r[1] <= 2) EXPECT_NEAR(h0 - r[8], v * (r[0] - t0), 1e-9 * h0);
+    if (r[1] <= 2) {
+      EXPECT_NEAR(h0 - r[8], v * (r[0] - t0), 1e-9 * h0);
+    }
   }
   for (std::size_t k = 1; k < ends.size(); ++k) {
     SCOPED_TRACE(k);
     const double target = ends[k][2], sv = ends[k][3];
     std::printf("stage %zu: sigma_v/target %.4f; e %.5f at a constant rate, %.5f in stages; K0 %.3f, %.3f\n", k,
                 sv / target, ends[k][9], steps[k][9], ends[k][6], steps[k][6]);
-    if (k < 3) EXPECT_GE(sv, target);  // loading: reached from below
-    else EXPECT_LE(sv, target);        // unloading: from above
+    if (k < 3) {
+      EXPECT_GE(sv, target);  // loading: reached from below
+    } else {
+      EXPECT_LE(sv, target);  // unloading: from above
+    }
     EXPECT_NEAR(sv / target, 1.0, 0.03);
     EXPECT_NEAR(ends[k][9], steps[k][9], 0.05 * (e0 - steps[2][9]));  // 5 % of the compression
     // K0: the stages' rests (creep at a constant sigma_v) move it a little,
