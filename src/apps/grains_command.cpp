@@ -32,6 +32,7 @@ struct GenerateOptions {
   std::string out;
   int faces = 2000;
   std::optional<double> roundness, elongation, flatness;
+  double convexity = 1.0;
   double d_min = 0.707e-3, d_max = 0.841e-3;
 };
 
@@ -74,6 +75,7 @@ int run_generate(const GenerateOptions& o) {
   if (o.roundness) spec.roundness = *o.roundness;
   if (o.elongation) spec.elongation = *o.elongation;
   if (o.flatness) spec.flatness = *o.flatness;
+  spec.convexity = o.convexity;
   Stopwatch clock;
   const GrainSet set = generate_grain_set(spec, o.count, o.seed, SieveRange{o.d_min, o.d_max});
   const double seconds = clock.seconds();
@@ -164,9 +166,10 @@ Command add_grains_command(CLI::App& app) {
   auto* gen = grains->add_subcommand(
       "generate",
       "write COUNT synthetic grains of a preset as binary STL files (metres), one per grain.\n"
-      "Each grain is a random convex polytope whose corners are rounded by a sphere; roundness is\n"
-      "Wadell's (mean corner radius / largest inscribed circle, averaged over the three principal\n"
-      "projections), elongation is I/L and flatness S/I (L >= I >= S principal dimensions).\n"
+      "Each grain is a random convex polytope whose corners are rounded by a sphere (then dented,\n"
+      "with --convexity below 1); roundness is Wadell's (mean corner radius / largest inscribed\n"
+      "circle, averaged over the three principal projections), elongation is I/L and flatness S/I\n"
+      "(L >= I >= S principal dimensions).\n"
       "Sizes (the intermediate dimension I, what a sieve sorts by) spread evenly over [d-min, d-max].\n"
       "The same seed gives the same files, bit for bit.");
   gen->add_option("--preset", g->preset, presets)
@@ -183,6 +186,13 @@ Command add_grains_command(CLI::App& app) {
   gen->add_option("--elongation", g->elongation, "mean I/L, (0, 1] (default: the preset's)")
       ->check(CLI::Range(0.0, 1.0));
   gen->add_option("--flatness", g->flatness, "mean S/I, (0, 1] (default: the preset's)")->check(CLI::Range(0.0, 1.0));
+  gen->add_option("--convexity", g->convexity,
+                  fmt::format("volume / convex hull volume, [{}, 1]: below 1 each grain gets one smooth dent (60 deg "
+                              "across, in a random direction) deep enough for it. grainlab still collides the convex "
+                              "hull of every grain (concave contact is not built yet)",
+                              kMinConvexity))
+      ->check(CLI::Range(kMinConvexity, 1.0))
+      ->capture_default_str();
   gen->add_option("--d-min", g->d_min, "smallest size (m): the retaining sieve, default #25 = 0.707e-3")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();

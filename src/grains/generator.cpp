@@ -21,16 +21,32 @@
 //     Fibonacci directions, whose hull has exactly `faces` triangles.
 //  5. The mesh is moved to its centroid and rotated into its principal frame.
 // R = 1 skips the core: the grain is a sphere (or an ellipsoid when E, F < 1).
+//  6. Dent (convexity C < 1 only; no random draw otherwise, so convex grains
+//     are the same bits as before). A direction u is drawn; every vertex v
+//     moves towards the centroid, v <- v (1 - a w(v)), with the smooth bump
+//       w = (1 - t)^2 for t = (1 - cos theta) / (1 - cos theta_0) < 1, else 0,
+//     theta the angle between v and u, theta_0 = 60 deg (w is 1 at u and
+//     falls to 0 with zero slope at theta_0). The convex grain is star-shaped
+//     about its centroid and every vertex keeps its direction, so the dented
+//     surface stays closed and free of self-intersection for any a < 1.
+//     Convexity V / V_hull falls monotonically as a grows: a is bisected
+//     until it is C within 1e-4. One dent of 60 deg reaches C = kMinConvexity
+//     at a depth of about 0.6 of the radius there; deeper asks are refused.
 #include "grains/generator.h"
 
 #include "core/error.h"
+#include "geometry/convex_hull.h"
+#include "geometry/mass_properties.h"
 #include "geometry/rounded_hull.h"
 #include "geometry/shape_metrics.h"
+#include "geometry/simplify.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <utility>
 
 namespace grainlab {
 namespace {
@@ -83,6 +99,89 @@ TriMesh to_principal_frame(const TriMesh& mesh) {
   TriMesh out = mesh;
   for (Vec3& v : out.vertices) v = f.axes.transpose() * (v - f.centroid);
   return out;
+}
+
+// Radius of the balls that bite the dents (step 6), grain intermediate dimension 1.
+constexpr double kBiteRadius = 0.5;
+// The mesh they bite: edges at most this long, or at most this many times the face budget.
+constexpr double kDentMeshEdge = 0.03;
+constexpr std::size_t kDentMeshFaceFactor = 16;
+
+// Each triangle split into four at its edges' midpoints (shared midpoints
+// shared), until no edge is longer than max_edge or the faces would pass
+// max_faces.
+TriMesh subdivided(TriMesh m, double max_edge, std::size_t max_faces) {
+  const auto longest = [](const TriMesh& t) {
+    double l = 0;
+    for (const Face& f : t.faces)
+      for (int k = 0; k < 3; ++k) l = std::max(l, (t.vertices[f[k]] - t.vertices[f[(k + 1) % 3]]).norm());
+    return l;
+  };
+  while (longest(m) > max_edge && 4 * m.faces.size() <= max_faces) {
+    std::map<std::pair<Index, Index>, Index> midpoint;
+    const auto mid = [&](Index a, Index b) {
+      const auto key = std::minmax(a, b);
+      auto [it, fresh] = midpoint.try_emplace({key.first, key.second}, static_cast<Index>(m.vertices.size()));
+      if (fresh) m.vertices.push_back(0.5 * (m.vertices[a] + m.vertices[b]));
+      return it->second;
+    };
+    std::vector<Face> faces;
+    faces.reserve(4 * m.faces.size());
+    for (const Face& f : m.faces) {
+      const Index ab = mid(f[0], f[1]), bc = mid(f[1], f[2]), ca = mid(f[2], f[0]);
+      faces.push_back({f[0], ab, ca});
+      faces.push_back({ab, f[1], bc});
+      faces.push_back({ca, bc, f[2]});
+      faces.push_back({ab, bc, ca});
+    }
+    m.faces = std::move(faces);
+  }
+  return m;
+}
+
+// Volume over convex hull volume.
+double convexity_of(const TriMesh& m) {
+  return mass_properties(m).volume / mass_properties(convex_hull(m.vertices).mesh()).volume;
+}
+
+// Step 6 above: the grain (centroid at the origin, intermediate dimension
+// about 1) bitten by two balls of radius kBiteRadius, about `u1` and `u2`,
+// to the same depth, for convexity `target`.
+TriMesh dented(const TriMesh& convex, const Vec3& u1, const Vec3& u2, double target) {
+  const std::array<Vec3, 2> dirs = {u1, u2};
+  std::array<double, 2> reach{};  // the grain's support along each direction
+  for (int k = 0; k < 2; ++k)
+    for (const Vec3& v : convex.vertices) reach[k] = std::max(reach[k], v.dot(dirs[k]));
+  const auto bitten = [&](double depth) {
+    TriMesh m = convex;
+    for (int k = 0; k < 2; ++k) {
+      const Vec3 c = (reach[k] + kBiteRadius - depth * reach[k]) * dirs[k];
+      for (Vec3& v : m.vertices) {
+        // The ray s d (d = v / |v|) enters the ball at s1 = d.c - sqrt((d.c)^2 - |c|^2 + rho^2).
+        const double r = v.norm(), dc = v.dot(c) / r;
+        const double disc = dc * dc - c.squaredNorm() + kBiteRadius * kBiteRadius;
+        if (disc <= 0) continue;
+        const double s1 = dc - std::sqrt(disc);
+        if (s1 > 0 && s1 < r) v *= s1 / r;  // the centroid stays outside the ball: s1 > 0 on rays towards it
+      }
+    }
+    return m;
+  };
+  // depth is a fraction of the reach: from balls clear of the grain (-rho /
+  // reach and less) to balls whose surface stops short of the centroid by a
+  // fifth of the reach (0.8).
+  const double deepest = 0.8;
+  if (convexity_of(bitten(deepest)) > target)
+    input_error("grain convexity {} is out of reach of two dents (the deepest give {:.3f}): ask for at least {}",
+                target, convexity_of(bitten(deepest)), kMinConvexity);
+  double lo = -kBiteRadius / std::min(reach[0], reach[1]), hi = deepest;
+  while (hi - lo > 1e-7) {
+    const double mid = 0.5 * (lo + hi);
+    const double c = convexity_of(bitten(mid));
+    if (std::abs(c - target) < 1e-4) return bitten(mid);
+    (c > target ? lo : hi) = mid;
+  }
+  return bitten(0.5 * (lo + hi));
 }
 
 }  // namespace
@@ -163,14 +262,20 @@ void validate(const GeneratorSpec& s) {
   }
   if (s.faces < 20) input_error("grain face budget must be at least 20, got {}", s.faces);
   if (s.corners < 6) input_error("grain core needs at least 6 corner points, got {}", s.corners);
+  if (!(s.convexity >= kMinConvexity && s.convexity <= 1)) {
+    input_error("grain convexity (volume / convex hull volume) must be in [{}, 1] (1 = convex, no dent), got {}",
+                kMinConvexity, s.convexity);
+  }
   if (!(s.roundness_spread >= 0) || !(s.aspect_spread >= 0)) {
     input_error("grain shape spreads must be >= 0, got roundness {} and aspect {}", s.roundness_spread,
                 s.aspect_spread);
   }
 }
 
-TriMesh generate_grain(const GeneratorSpec& spec, Rng& rng) {
-  validate(spec);
+namespace {
+
+// Steps 1-5 above: the convex grain.
+TriMesh generate_convex_grain(const GeneratorSpec& spec, Rng& rng) {
   // Per-grain targets; the draws happen in a fixed order whatever the preset.
   const double du = rng.uniform(-1.0, 1.0), de = rng.uniform(-1.0, 1.0), df = rng.uniform(-1.0, 1.0);
   const double e = std::clamp(spec.elongation + spec.aspect_spread * de, 0.2, 1.0);
@@ -227,6 +332,31 @@ TriMesh generate_grain(const GeneratorSpec& spec, Rng& rng) {
   }
   TriMesh m = to_principal_frame(best);
   // Unit intermediate dimension keeps numbers readable before the grain is sized.
+  const double s = 1.0 / principal_frame(m).extents[1];
+  for (Vec3& v : m.vertices) v *= s;
+  return m;
+}
+
+}  // namespace
+
+TriMesh generate_grain(const GeneratorSpec& spec, Rng& rng) {
+  validate(spec);
+  TriMesh m = generate_convex_grain(spec, rng);
+  if (spec.convexity >= 1) return m;
+  const Vec3 u1 = rng.unit_vector();
+  Vec3 u2 = rng.unit_vector();
+  if (u2.dot(u1) > 0) u2 = -u2;  // the two dents on different sides
+  // Bitten on a fine mesh (a rounded hull's flat faces are single large
+  // triangles, which a dent would cut into fans), then simplified back to the
+  // face budget; the target is corrected once by the convexity the
+  // simplification moved.
+  const TriMesh fine = subdivided(m, kDentMeshEdge, kDentMeshFaceFactor * static_cast<std::size_t>(spec.faces));
+  double target = spec.convexity;
+  for (int attempt = 0; attempt < 2; ++attempt) {
+    m = simplify_mesh(dented(fine, u1, u2, target), spec.faces).mesh;
+    target = std::clamp(target + spec.convexity - convexity_of(m), 0.5, 1.0);
+  }
+  m = to_principal_frame(m);
   const double s = 1.0 / principal_frame(m).extents[1];
   for (Vec3& v : m.vertices) v *= s;
   return m;

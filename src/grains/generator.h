@@ -1,6 +1,7 @@
 // Synthetic sand grains with controlled angularity: a random convex polytope
 // (the hull of random points near an ellipsoid) whose corners and edges are
-// rounded by a sphere of radius r, i.e. the Minkowski sum core + ball(r).
+// rounded by a sphere of radius r, i.e. the Minkowski sum core + ball(r);
+// optionally with one smooth dent, for a chosen convexity.
 // Every corner of such a grain's projection outline is a circular arc of radius
 // r, so Wadell roundness is set directly by r (see docs/grains.md).
 #pragma once
@@ -38,13 +39,18 @@ struct GeneratorSpec {
   int corners = 16;               // random points whose hull is the core polytope (>= 6)
   double roundness_spread = 0.05; // +- around `roundness`
   double aspect_spread = 0.05;    // +- around `elongation` and `flatness`
+  double convexity = 1.0;         // volume / convex hull volume, in [kMinConvexity, 1]; < 1 presses a dent in
 };
+
+// The deepest dent the generator makes (one smooth dent, generator.cpp).
+inline constexpr double kMinConvexity = 0.8;
 
 // The preset's defaults; change fields afterwards to tune them.
 GeneratorSpec preset_spec(GrainPreset preset);
 
 // Throws InputError naming the bad field (roundness outside (0, 1], aspect
-// ratios outside (0, 1], faces < 20, corners < 6, negative spreads).
+// ratios outside (0, 1], faces < 20, corners < 6, negative spreads, convexity
+// outside [kMinConvexity, 1]).
 void validate(const GeneratorSpec& spec);
 
 // One grain: closed, outward (passes check_mesh), centred at its centroid, in

@@ -75,7 +75,7 @@ GrainSet generate_grain_set(const GeneratorSpec& spec, int count, std::uint64_t 
   GrainSet set;
   set.meshes.resize(seeds.size());
   set.spheres = spec.roundness >= 1.0 && spec.elongation >= 1.0 && spec.flatness >= 1.0 &&
-                spec.aspect_spread == 0;
+                spec.aspect_spread == 0 && spec.convexity >= 1.0;  // dented beads are not spheres
   parallel_for(
       count,
       [&](std::ptrdiff_t k) {

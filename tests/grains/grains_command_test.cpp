@@ -55,5 +55,24 @@ TEST(GrainsCommand, UnknownPresetIsRefused) {
   EXPECT_NE(std::system(cmd.c_str()), 0);
 }
 
+TEST(GrainsCommand, ConvexityDentsTheGrainsAndStatsMeasureIt) {
+  test::TempDir dir;
+  const std::string bin = GRAINLAB_BINARY;
+  const std::string out = (dir / "dented").string();
+  const std::string gen = bin + " grains generate --preset sub-angular --count 2 --faces 400 --convexity 0.9 --out " +
+                          out + " > " + (dir / "gen.txt").string() + " 2>&1";
+  ASSERT_EQ(std::system(gen.c_str()), 0) << slurp(dir / "gen.txt");
+  EXPECT_CONTAINS(slurp(dir / "gen.txt"), "convexity 0.90");  // the set's summary line
+  const std::string stats = bin + " grains stats " + out + " > " + (dir / "stats.csv").string() + " 2>&1";
+  ASSERT_EQ(std::system(stats.c_str()), 0) << slurp(dir / "stats.csv");
+  EXPECT_CONTAINS(slurp(dir / "stats.csv"), "convexity 0.90");
+  // Below what two dents reach: refused, nothing written.
+  const std::string deep = bin + " grains generate --preset sub-angular --convexity 0.5 --out " +
+                           (dir / "deep").string() + " > " + (dir / "deep.txt").string() + " 2>&1";
+  EXPECT_NE(std::system(deep.c_str()), 0);
+  EXPECT_CONTAINS(slurp(dir / "deep.txt"), "--convexity");
+  EXPECT_FALSE(std::filesystem::exists(dir / "deep"));
+}
+
 }  // namespace
 }  // namespace grainlab
