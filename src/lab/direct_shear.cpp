@@ -90,8 +90,7 @@ DirectShearTest::DirectShearTest(const DirectShearSpec& spec) : spec_(spec) {
   shear_speed_ = spec.shear.speed > 0 ? spec.shear.speed
                                       : spec.numerics.inertial_number * spec.box.height /
                                             (mean_diameter() * std::sqrt(rho / spec.consolidation.normal_stress));
-  // The cap never moves more than 2e-4 grain diameters per step.
-  servo_ = StressServo(Cap, box_area(), spec.consolidation.normal_stress, 2e-4 * mean_diameter() / dt_);
+  servo_ = StressServo(Cap, box_area(), spec.consolidation.normal_stress, servo_speed_limit());
   world_.add_controller([this](World& w, double dt) {
     if (p_.phase != ShearPhase::Deposit && p_.phase != ShearPhase::Done) servo_.control(w, dt);
   });

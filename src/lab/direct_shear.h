@@ -91,6 +91,8 @@ class DirectShearTest final : public LabTest {
   double shear_speed() const { return shear_speed_; }
   double solid_volume() const { return specimen_.solid_volume; }   // m^3
   double mean_diameter() const { return specimen_.mean_diameter; } // m, volume-equivalent
+  // m/s: the fastest a servo moves a wall while preparing, 2e-4 grain diameters per step.
+  double servo_speed_limit() const { return 2e-4 * mean_diameter() / dt_; }
   double shear_strain() const;
   double normal_stress() const { return normal_force() / box_area(); }  // Pa, on the cap
   double shear_force() const;    // N, on the upper half

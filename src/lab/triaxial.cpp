@@ -101,8 +101,8 @@ TriaxialSummary summarise_triaxial(const std::vector<std::vector<double>>& rows)
 }
 
 TriaxialTest::TriaxialTest(const DirectShearSpec& spec) : ClosedBoxTest(spec) {
-  const double sigma3 = spec.consolidation.normal_stress, dt = prep_.time_step();
-  const double limit = 2e-4 * prep_.mean_diameter() / dt;  // as the preparation's servo
+  const double sigma3 = spec.consolidation.normal_stress;
+  const double limit = prep_.servo_speed_limit();  // as the preparation's servo
   cap_servo_ = StressServo(Cap, spec.box.length * spec.box.width, sigma3, limit);
   for (int k = 0; k < 4; ++k)
     side_servos_[k] = StressServo({kSides[k].lower, kSides[k].upper}, 2, kSides[k].axis, kSides[k].inward,
