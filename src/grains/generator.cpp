@@ -21,17 +21,24 @@
 //     Fibonacci directions, whose hull has exactly `faces` triangles.
 //  5. The mesh is moved to its centroid and rotated into its principal frame.
 // R = 1 skips the core: the grain is a sphere (or an ellipsoid when E, F < 1).
-//  6. Dent (convexity C < 1 only; no random draw otherwise, so convex grains
-//     are the same bits as before). A direction u is drawn; every vertex v
-//     moves towards the centroid, v <- v (1 - a w(v)), with the smooth bump
-//       w = (1 - t)^2 for t = (1 - cos theta) / (1 - cos theta_0) < 1, else 0,
-//     theta the angle between v and u, theta_0 = 60 deg (w is 1 at u and
-//     falls to 0 with zero slope at theta_0). The convex grain is star-shaped
-//     about its centroid and every vertex keeps its direction, so the dented
-//     surface stays closed and free of self-intersection for any a < 1.
-//     Convexity V / V_hull falls monotonically as a grows: a is bisected
-//     until it is C within 1e-4. One dent of 60 deg reaches C = kMinConvexity
-//     at a depth of about 0.6 of the radius there; deeper asks are refused.
+//  6. Dents (convexity C < 1 only; no random draw otherwise, so convex grains
+//     are the same bits as before). Two directions u1, u2 on different sides
+//     are drawn (u2 flipped if u1.u2 > 0). A ball of radius rho = 0.5 (the
+//     intermediate dimension is 1 here) comes in along each, its centre at
+//     (h_k + rho - depth h_k) u_k with h_k the grain's support along u_k, and
+//     every vertex inside it moves towards the centroid onto the ball's
+//     surface: along the ray s d (d = v / |v|) the ball begins at
+//       s1 = d.c - sqrt((d.c)^2 - |c|^2 + rho^2),
+//     and v <- s1 d when 0 < s1 < |v|. The convex grain is star-shaped about
+//     its centroid and no vertex changes direction, so the bitten surface
+//     stays closed and free of self-intersection (the centroid stays outside
+//     the balls: depth <= 0.8). Convexity V / V_hull falls as the depth grows:
+//     it is bisected until it is C within 1e-4, on the mesh subdivided to
+//     edges of at most 0.03 (a rounded hull's flat faces are single large
+//     triangles, which a dent would cut into fans); the result is simplified
+//     back to the face budget and the target corrected once for the convexity
+//     the simplification moved. One such dent bottoms out near C = 0.865, two
+//     near 0.755: C below kMinConvexity = 0.8 is refused.
 #include "grains/generator.h"
 
 #include "core/error.h"

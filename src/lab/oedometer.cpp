@@ -78,7 +78,8 @@ OedometerSummary summarise_oedometer(const std::vector<std::vector<double>>& all
   return s;
 }
 
-OedometerTest::OedometerTest(const DirectShearSpec& spec) : ClosedBoxTest(spec) {
+OedometerTest::OedometerTest(const DirectShearSpec& spec)
+    : ClosedBoxTest(spec), constant_rate_(spec.oedometer.loading == "constant-rate") {
   // Runs after the preparation's servo, which is idle once it is done.
   world().add_controller([this](World& w, double dt) {
     if (p_.phase == OedometerPhase::Load && !constant_rate()) servo_.control(w, dt);
@@ -169,8 +170,7 @@ void OedometerTest::set_cap_speed() {
 
 bool OedometerTest::stage_reached() const {
   const double target = stage_stress(p_.stage);
-  return stage_stress(p_.stage) < stage_stress(p_.stage - 1) ? vertical_stress() <= target
-                                                              : vertical_stress() >= target;
+  return target < stage_stress(p_.stage - 1) ? vertical_stress() <= target : vertical_stress() >= target;
 }
 
 bool OedometerTest::advance_constant_rate(int max_steps) {

@@ -102,7 +102,7 @@ class OedometerTest final : public ClosedBoxTest {
   double progress() const override;
   double final_progress() const override { return 1; }
   // Constant rate of strain instead of stages held to rest.
-  bool constant_rate() const { return spec_.oedometer.loading == "constant-rate"; }
+  bool constant_rate() const { return constant_rate_; }
   double cap_speed() const { return cap_speed_; }       // m/s at a constant rate (0 before loading)
   std::string progress_label() const override { return "fraction of the load stages done"; }
   std::string status_line() const override;
@@ -156,6 +156,7 @@ class OedometerTest final : public ClosedBoxTest {
   Progress p_;
   StressServo servo_{0, 0, 0, 0};  // set at each stage
   double cap_speed_ = 0;            // m/s, constant rate
+  bool constant_rate_ = false;      // oedometer.loading == "constant-rate" (read every step)
 };
 
 }  // namespace grainlab

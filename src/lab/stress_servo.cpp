@@ -18,7 +18,7 @@ void StressServo::control(World& w, double dt) {
     const double v = gain * (error + integral_);
     outward_speed = std::clamp(v, -speed_limit_, speed_limit_);
     // Integral action only while the walls are free to follow (no wind-up at the clamp).
-    if (outward_speed == v) integral_ += beta_ * error;
+    if (outward_speed == v) integral_ += alpha_ / 10 * error;
   } else {
     integral_ = 0;
   }

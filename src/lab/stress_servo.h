@@ -40,7 +40,7 @@ class StressServo {
   StressServo(std::array<Index, 2> walls, int count, int axis, double inward, double area, double target,
               double speed_limit, double alpha = kAlpha)
       : walls_(walls), count_(count), axis_(axis), inward_(inward), area_(area), target_(target),
-        speed_limit_(speed_limit), alpha_(alpha), beta_(alpha / 10) {}
+        speed_limit_(speed_limit), alpha_(alpha) {}
 
   // One control step: sets the walls' velocity along the axis from the forces of this step.
   void control(World& w, double dt);
@@ -68,7 +68,7 @@ class StressServo {
   int count_, axis_;
   double inward_;
   double area_, target_, speed_limit_;
-  double alpha_, beta_;
+  double alpha_;  // the proportional gain; the integral's is alpha_ / 10
   double integral_ = 0;  // Pa
 };
 
