@@ -18,7 +18,7 @@ std::optional<double> mean_grain_roundness(const Model& model) {
     if (uses[s] == 0) continue;
     const Shape& shape = model.shapes[s];
     double r = 1;  // a sphere is perfectly round
-    if (shape.kind == Shape::Kind::Polytope) {
+    if (shape.kind != Shape::Kind::Sphere) {  // the mesh: exact for concave grains too
       try {
         r = shape_metrics(shape.mesh).roundness;  // scale-free: the library shape stands for its grains
       } catch (const std::exception&) {

@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <span>
 
 namespace grainlab {
 
@@ -29,11 +30,11 @@ Index Model::add_sphere_shape(double radius, std::string name) {
   return static_cast<Index>(shapes.size() - 1);
 }
 
-Index Model::add_mesh_shape(const TriMesh& mesh, std::string name) {
-  const MassProperties mp = mass_properties(mesh);
-  if (!(mp.volume > 0)) input_error("shape '{}': the mesh has no volume", name);
+namespace {
+
+// A mesh shape's exact mass properties, and its mesh moved into the principal frame.
+Shape principal_mesh_shape(const TriMesh& mesh, const MassProperties& mp, std::string name) {
   Shape s;
-  s.kind = Shape::Kind::Polytope;
   s.name = std::move(name);
   s.volume = mp.volume;
   s.unit_moments = mp.principal_moments;
@@ -45,8 +46,52 @@ Index Model::add_mesh_shape(const TriMesh& mesh, std::string name) {
     s.mesh.vertices.push_back(mp.principal_axes.transpose() * (p - mp.centroid));
     s.bounding_radius = std::max(s.bounding_radius, s.mesh.vertices.back().norm());
   }
-  const ConvexHull hull = convex_hull(s.mesh.vertices);
-  s.hull = ConvexPolytope(hull.vertices, hull.adjacency_offsets, hull.adjacency);
+  return s;
+}
+
+ConvexPolytope polytope_of(std::span<const Vec3> points) {
+  const ConvexHull hull = convex_hull(points);
+  return ConvexPolytope(hull.vertices, hull.adjacency_offsets, hull.adjacency);
+}
+
+}  // namespace
+
+Index Model::add_mesh_shape(const TriMesh& mesh, std::string name) {
+  const MassProperties mp = mass_properties(mesh);
+  if (!(mp.volume > 0)) input_error("shape '{}': the mesh has no volume", name);
+  Shape s = principal_mesh_shape(mesh, mp, std::move(name));
+  s.kind = Shape::Kind::Polytope;
+  s.hull = polytope_of(s.mesh.vertices);
+  shapes.push_back(std::move(s));
+  return static_cast<Index>(shapes.size() - 1);
+}
+
+Index Model::add_concave_shape(const TriMesh& mesh, const std::vector<std::vector<Vec3>>& pieces, std::string name) {
+  if (pieces.empty() || pieces.size() > static_cast<std::size_t>(kMaxCompoundPieces))
+    input_error("concave shape '{}': {} pieces; give 1 to {}", name, pieces.size(), kMaxCompoundPieces);
+  const MassProperties mp = mass_properties(mesh);
+  if (!(mp.volume > 0)) input_error("shape '{}': the mesh has no volume", name);
+  Shape s = principal_mesh_shape(mesh, mp, std::move(name));
+  s.kind = Shape::Kind::Compound;
+  for (const std::vector<Vec3>& points : pieces) {
+    // The piece's points in the principal frame, about their mean (the piece's offset).
+    std::vector<Vec3> local;
+    Vec3 mean = Vec3::Zero();
+    for (const Vec3& p : points) {
+      local.push_back(mp.principal_axes.transpose() * (p - mp.centroid));
+      mean += local.back();
+    }
+    mean /= static_cast<double>(local.size());
+    for (Vec3& p : local) {
+      p -= mean;
+      s.bounding_radius = std::max(s.bounding_radius, (p + mean).norm());
+    }
+    CompoundPiece piece;
+    piece.kind = Shape::Kind::Polytope;
+    piece.offset = mean;
+    piece.hull = polytope_of(local);
+    s.compound.pieces.push_back(std::move(piece));
+  }
   shapes.push_back(std::move(s));
   return static_cast<Index>(shapes.size() - 1);
 }
@@ -106,8 +151,7 @@ Index Model::add_compound_shape(const std::vector<CompoundPart>& parts, std::str
     } else {
       for (Vec3& v : local.vertices) v = axes.transpose() * (v - cen[k]);
       piece.kind = Shape::Kind::Polytope;
-      const ConvexHull hull = convex_hull(local.vertices);
-      piece.hull = ConvexPolytope(hull.vertices, hull.adjacency_offsets, hull.adjacency);
+      piece.hull = polytope_of(local.vertices);
     }
     // The drawn surface: every part's mesh in the principal frame.
     const Index base = static_cast<Index>(s.mesh.vertices.size());

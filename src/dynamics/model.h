@@ -31,6 +31,7 @@ struct Shape {
   double bounding_radius = 0;        // max distance of the surface from the centroid, scale 1 (m)
   ConvexPolytope hull;               // polytope shapes: convex hull in the principal frame
   TriMesh mesh;                      // polytope and compound shapes: the surface in the principal frame
+                                     // (a concave grain's exact mesh; its pieces only collide)
   CompoundShape compound;            // compound shapes: the pieces in the principal frame
 };
 
@@ -83,6 +84,10 @@ struct Model {
   // inertias add, so overlapping parts would count twice), moved to its
   // principal frame.
   Index add_compound_shape(const std::vector<CompoundPart>& parts, std::string name);
+  // A concave grain: mass properties from the exact closed mesh, collision by
+  // the convex hulls of `pieces` (point sets in the mesh's coordinates, e.g.
+  // from decompose_convex; 1 to kMaxCompoundPieces), moved to the principal frame.
+  Index add_concave_shape(const TriMesh& mesh, const std::vector<std::vector<Vec3>>& pieces, std::string name);
   Index add_material(const Material& m);
 
   // Coefficients of a material pair (valid after finalize()).

@@ -12,6 +12,8 @@
 // the hull: greedy ascent over this graph finds the support point.
 #include "geometry/convex_hull.h"
 
+#include "geometry/mass_properties.h"
+
 #include "core/error.h"
 
 #include <libqhull_r/qhull_ra.h>  // declares its functions extern "C" itself
@@ -160,6 +162,10 @@ bool is_convex(const TriMesh& mesh, double tol) {
     }
   }
   return true;
+}
+
+double convexity(const TriMesh& mesh) {
+  return mass_properties(mesh).volume / mass_properties(convex_hull(mesh.vertices).mesh()).volume;
 }
 
 }  // namespace grainlab

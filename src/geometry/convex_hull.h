@@ -24,6 +24,9 @@ struct ConvexHull {
 // non-finite, or (nearly) coplanar.
 ConvexHull convex_hull(std::span<const Vec3> points);
 
+// Volume of a closed mesh over the volume of its convex hull (1 for a convex mesh).
+double convexity(const TriMesh& mesh);
+
 // True if no vertex lies farther than tol * (bounding-box diagonal) outside the
 // plane of any non-degenerate face: the mesh is (within tol) its own hull.
 bool is_convex(const TriMesh& mesh, double tol);

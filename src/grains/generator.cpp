@@ -146,11 +146,6 @@ TriMesh subdivided(TriMesh m, double max_edge, std::size_t max_faces) {
   return m;
 }
 
-// Volume over convex hull volume.
-double convexity_of(const TriMesh& m) {
-  return mass_properties(m).volume / mass_properties(convex_hull(m.vertices).mesh()).volume;
-}
-
 // Step 6 above: the grain (centroid at the origin, intermediate dimension
 // about 1) bitten by two balls of radius kBiteRadius, about `u1` and `u2`,
 // to the same depth, for convexity `target`.
@@ -178,13 +173,13 @@ TriMesh dented(const TriMesh& convex, const Vec3& u1, const Vec3& u2, double tar
   // reach and less) to balls whose surface stops short of the centroid by a
   // fifth of the reach (0.8).
   const double deepest = 0.8;
-  if (convexity_of(bitten(deepest)) > target)
+  if (convexity(bitten(deepest)) > target)
     input_error("grain convexity {} is out of reach of two dents (the deepest give {:.3f}): ask for at least {}",
-                target, convexity_of(bitten(deepest)), kMinConvexity);
+                target, convexity(bitten(deepest)), kMinConvexity);
   double lo = -kBiteRadius / std::min(reach[0], reach[1]), hi = deepest;
   while (hi - lo > 1e-7) {
     const double mid = 0.5 * (lo + hi);
-    const double c = convexity_of(bitten(mid));
+    const double c = convexity(bitten(mid));
     if (std::abs(c - target) < 1e-4) return bitten(mid);
     (c > target ? lo : hi) = mid;
   }
@@ -361,7 +356,7 @@ TriMesh generate_grain(const GeneratorSpec& spec, Rng& rng) {
   double target = spec.convexity;
   for (int attempt = 0; attempt < 2; ++attempt) {
     m = simplify_mesh(dented(fine, u1, u2, target), spec.faces).mesh;
-    target = std::clamp(target + spec.convexity - convexity_of(m), 0.5, 1.0);
+    target = std::clamp(target + spec.convexity - convexity(m), 0.5, 1.0);
   }
   m = to_principal_frame(m);
   const double s = 1.0 / principal_frame(m).extents[1];

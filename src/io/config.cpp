@@ -9,6 +9,7 @@
 #include "core/error.h"
 #include "io/spec_fields.h"
 #include "lab/lab_test.h"
+#include "grains/generator.h"
 #include "lab/sand_presets.h"
 
 #include <fmt/format.h>
@@ -47,6 +48,10 @@ const std::array kFields{
     GL_FIELD("grains", "faces", grains.faces, "face budget per grain shape (>= 100)"),
     GL_FIELD("grains", "d_min", grains.d_min, "m, smallest sieve size (0.707 mm: retained on sieve #25)"),
     GL_FIELD("grains", "d_max", grains.d_max, "m, largest sieve size (0.841 mm: passing sieve #20)"),
+    GL_FIELD("grains", "convexity", grains.convexity,
+             "generated grains: volume / convex hull volume, 0.8-1 (< 1 bites two dents into each grain)"),
+    GL_FIELD("grains", "representation", grains.representation,
+             "collision shape: auto (concave pieces below convexity 0.98, else the hull) | hull | concave"),
 
     GL_FIELD("material", "preset", material.preset, "sand preset applied first: crushed-limestone | griffin | ottawa | glass-beads | \"\" (none)"),
     GL_FIELD("material", "contact_law", material.law, "\"hertz-material\" (E, Poisson, restitution) | \"hertz\" (paper's k_n, k_t, gamma_n, gamma_t) | \"hooke\" (linear)"),
@@ -360,6 +365,10 @@ void validate_spec(const DirectShearSpec& spec_in, const std::string& source, co
   need(g.d_min > 0, "grains.d_min", g.d_min, "> 0 (m; 0.707 mm is 0.707e-3)");
   need(g.d_max > g.d_min, "grains.d_max", g.d_max,
        fmt::format("larger than grains.d_min = {} (m; the sieve range is [d_min, d_max])", g.d_min));
+  need(g.convexity >= kMinConvexity && g.convexity <= 1, "grains.convexity", g.convexity,
+       fmt::format("in [{}, 1] (volume over convex hull volume; 1 = convex grains)", kMinConvexity));
+  need_s(g.representation == "auto" || g.representation == "hull" || g.representation == "concave",
+         "grains.representation", g.representation, "one of \"auto\", \"hull\", \"concave\"");
 
   const MaterialSpec& ms = spec.material;
   const std::vector<std::string> sands = sand_preset_names();

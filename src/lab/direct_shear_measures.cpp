@@ -127,6 +127,13 @@ std::vector<SummaryValue> DirectShearTest::summary() const {
           {"final", "friction_angle_deg", s.final_friction_angle_deg},
           {"final", "dilation_angle_deg", s.final_dilation_angle_deg},
           {"final", "void_ratio", s.final_void_ratio}};
+  const GrainRepresentation& r = specimen_.representation;
+  v.push_back({"grains", "concave_shapes", static_cast<double>(r.concave_shapes)});
+  if (r.concave_shapes > 0) {
+    v.push_back({"grains", "pieces_per_concave_shape", static_cast<double>(r.pieces) / r.concave_shapes});
+    v.push_back({"grains", "hull_excess_volume_fraction", r.hull_excess});
+    v.push_back({"grains", "pieces_excess_volume_fraction", r.pieces_excess});
+  }
   if (spec_.own_indices_known()) {
     v.push_back({"preparation", "relative_density_own", achieved_own_relative_density()});
     v.push_back({"preparation", "own_e_min", spec_.specimen.own_e_min});

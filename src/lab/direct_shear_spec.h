@@ -22,7 +22,14 @@ struct GrainsSpec {
                                        // the demo under 10 minutes on 2 cores)
   double d_min = 0.707e-3;             // m, sieve range (passing #20, retained on #25)
   double d_max = 0.841e-3;             // m
+  double convexity = 1.0;              // generated grains: volume / hull volume (< 1 bites dents; 0.8-1)
+  std::string representation = "auto";  // collision shape of non-spherical grains: "hull" (convex hull),
+                                         // "concave" (convex pieces, convex_decomposition.h), or "auto":
+                                         // concave below convexity kConcaveBelow, hull otherwise
 };
+
+// Grains less convex than this are collided as pieces under representation "auto".
+inline constexpr double kConcaveBelow = 0.98;
 
 struct MaterialSpec {
   std::string preset;                  // crushed-limestone | griffin | ottawa | glass-beads | "" (use values below)

@@ -2,15 +2,37 @@
 #pragma once
 
 #include "dynamics/model.h"
+#include "geometry/convex_decomposition.h"
+#include "grains/grain_set.h"
 #include "lab/direct_shear_spec.h"
 
+#include <string>
 #include <vector>
 
 namespace grainlab {
 
+// How a run's grain shapes are collided (for run.json and the log).
+struct GrainRepresentation {
+  int shapes = 0;             // shapes in the library
+  int concave_shapes = 0;     // of them, collided as convex pieces
+  int pieces = 0;             // pieces of those, in all
+  double hull_excess = 0;     // mean over the concave shapes: V(hull) / V - 1 (what the hull would fill in)
+  double pieces_excess = 0;   // mean over the concave shapes: V(pieces) / V - 1
+};
+
+// True if a grain of this convexity is collided as pieces under `representation`
+// ("hull", "concave", or "auto": below kConcaveBelow).
+bool collides_as_pieces(const std::string& representation, double convexity);
+
+// The grain set of a spec: generated from the preset (with spec.convexity),
+// or imported from the folder.
+GrainSet make_grain_set(const GrainsSpec& spec, std::uint64_t seed);
+
 // Adds spec.shapes grain shapes (generated from the preset, or imported from
 // the folder) at their physical size to `model`, and returns their indices.
-// Glass beads become analytic spheres.
-std::vector<Index> add_grain_shapes(Model& model, const GrainsSpec& spec, std::uint64_t seed);
+// Glass beads become analytic spheres; concave grains (spec.representation)
+// become convex pieces with the exact mesh's mass properties.
+std::vector<Index> add_grain_shapes(Model& model, const GrainsSpec& spec, std::uint64_t seed,
+                                    GrainRepresentation* report = nullptr);
 
 }  // namespace grainlab

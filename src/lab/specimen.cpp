@@ -15,7 +15,7 @@ namespace grainlab {
 Specimen place_loose_specimen(World& world, const DirectShearSpec& spec, Index grain_material) {
   Model& m = world.model;
   Specimen sp;
-  const std::vector<Index> shapes = add_grain_shapes(m, spec.grains, spec.seed);
+  const std::vector<Index> shapes = add_grain_shapes(m, spec.grains, spec.seed, &sp.representation);
   double mean_volume = 0, max_bound = 0;
   for (Index s : shapes) {
     mean_volume += m.shapes[s].volume / shapes.size();

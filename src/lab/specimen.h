@@ -14,6 +14,8 @@
 // sides); the compaction that follows finishes the settling under the cap.
 #pragma once
 
+#include "lab/grain_library.h"
+
 #include "dynamics/world.h"
 #include "lab/direct_shear_spec.h"
 
@@ -28,6 +30,7 @@ struct Specimen {
   double mean_diameter = 0;  // m, volume-equivalent, of the shapes
   double mean_mass = 0;      // kg, true mass
   double fill_top = 0;       // m, top of the loose fill
+  GrainRepresentation representation;  // how the shapes are collided
 };
 
 // Adds the grain shapes and the grains (material `grain_material`) of `spec`

@@ -6,6 +6,7 @@
 #include "core/error.h"
 #include "dynamics/model.h"
 #include "dynamics/state.h"
+#include "geometry/mass_properties.h"
 #include "lab/grain_library.h"
 
 #include <cmath>
@@ -68,10 +69,10 @@ void refuse_impossible_specimen(double count, double available, const BoxSpec& b
 }
 
 void check_specimen_fits(const DirectShearSpec& spec) {
-  Model scratch;
-  const std::vector<Index> shapes = add_grain_shapes(scratch, spec.grains, spec.seed);
+  // Volumes only: the meshes' own (collision shapes are not needed here).
+  const GrainSet set = make_grain_set(spec.grains, spec.seed);
   double mean_volume = 0;
-  for (Index k : shapes) mean_volume += scratch.shapes[k].volume / shapes.size();
+  for (const TriMesh& mesh : set.meshes) mean_volume += mass_properties(mesh).volume / set.meshes.size();
   const bool known = !spec.targets_own_indices() || spec.own_indices_known();
   const double e = known ? spec.target_void_ratio() : std::min(spec.specimen.e_min, 0.5);
   refuse_impossible_specimen(specimen_grain_count(spec.box, e, mean_volume), available_memory_bytes(), spec.box,
