@@ -104,4 +104,60 @@ TriMesh ellipsoid_mesh(double a, double b, double c, int subdivisions) {
   return m;
 }
 
+namespace {
+
+double cross2(const Vec2& a, const Vec2& b, const Vec2& c) {
+  return (b - a).x() * (c - a).y() - (b - a).y() * (c - a).x();
+}
+
+// Ear clipping of a simple counter-clockwise polygon: repeatedly cuts off a
+// convex corner whose triangle holds no other corner.
+std::vector<Face> triangulate(const std::vector<Vec2>& p) {
+  std::vector<Index> left(p.size());
+  for (std::size_t k = 0; k < p.size(); ++k) left[k] = static_cast<Index>(k);
+  std::vector<Face> out;
+  while (left.size() > 3) {
+    bool cut = false;
+    for (std::size_t k = 0; k < left.size() && !cut; ++k) {
+      const Index a = left[(k + left.size() - 1) % left.size()], b = left[k], c = left[(k + 1) % left.size()];
+      if (cross2(p[a], p[b], p[c]) <= 0) continue;  // reflex or flat corner
+      bool empty = true;
+      for (Index q : left)
+        if (q != a && q != b && q != c && cross2(p[a], p[b], p[q]) >= 0 && cross2(p[b], p[c], p[q]) >= 0 &&
+            cross2(p[c], p[a], p[q]) >= 0)
+          empty = false;
+      if (!empty) continue;
+      out.push_back({a, b, c});
+      left.erase(left.begin() + static_cast<std::ptrdiff_t>(k));
+      cut = true;
+    }
+    if (!cut) input_error("prism: the polygon of {} corners is not simple and counter-clockwise", p.size());
+  }
+  if (cross2(p[left[0]], p[left[1]], p[left[2]]) <= 0)
+    input_error("prism: the polygon of {} corners is not simple and counter-clockwise", p.size());
+  out.push_back({left[0], left[1], left[2]});
+  return out;
+}
+
+}  // namespace
+
+TriMesh prism_mesh(const std::vector<Vec2>& polygon, double half_depth) {
+  if (polygon.size() < 3) input_error("prism: the polygon has {} corners; give at least 3", polygon.size());
+  if (!(half_depth > 0)) input_error("prism: half depth {} must be positive", half_depth);
+  const Index n = static_cast<Index>(polygon.size());
+  TriMesh m;
+  for (const Vec2& q : polygon) m.vertices.emplace_back(q.x(), q.y(), -half_depth);  // bottom: 0..n-1
+  for (const Vec2& q : polygon) m.vertices.emplace_back(q.x(), q.y(), half_depth);   // top: n..2n-1
+  for (const Face& f : triangulate(polygon)) {
+    m.faces.push_back({f[0] + n, f[1] + n, f[2] + n});  // top, seen from +z: counter-clockwise
+    m.faces.push_back({f[0], f[2], f[1]});              // bottom, reversed
+  }
+  for (Index k = 0; k < n; ++k) {  // sides: outward for a counter-clockwise outline
+    const Index j = (k + 1) % n;
+    m.faces.push_back({k, j, j + n});
+    m.faces.push_back({k, j + n, k + n});
+  }
+  return m;
+}
+
 }  // namespace grainlab

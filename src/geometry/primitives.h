@@ -3,6 +3,8 @@
 
 #include "geometry/trimesh.h"
 
+#include <vector>
+
 namespace grainlab {
 
 // Axis-aligned box centred at the origin with half extents hx, hy, hz (8 vertices, 12 faces).
@@ -17,5 +19,11 @@ TriMesh icosphere(double radius, int subdivisions);
 
 // Ellipsoid with semi-axes a, b, c along x, y, z: the unit icosphere scaled per axis.
 TriMesh ellipsoid_mesh(double a, double b, double c, int subdivisions);
+
+// Prism: a simple polygon in the xy plane (counter-clockwise, at least 3
+// corners, convex or not) extruded from z = -half_depth to +half_depth; the
+// caps are triangulated by ear clipping. Throws InputError for a polygon
+// that is clockwise, degenerate or self-touching.
+TriMesh prism_mesh(const std::vector<Vec2>& polygon, double half_depth);
 
 }  // namespace grainlab

@@ -11,7 +11,6 @@
 
 namespace grainlab {
 
-using Vec2 = Eigen::Vector2d;
 
 // Shape descriptors of one closed, outward mesh. Lengths in the mesh's units (m).
 struct ShapeMetrics {
