@@ -17,12 +17,25 @@
 
 namespace grainlab {
 
+// A half-space n.p <= c of the compound's frame (p in m at scale 1; n unit).
+struct CellPlane {
+  Vec3 n = Vec3::UnitZ();
+  double c = 0;
+};
+
 // One convex piece of a compound.
 struct CompoundPiece {
   ShapeKind kind = ShapeKind::Sphere;  // Sphere or Polytope
   Vec3 offset = Vec3::Zero();          // piece origin in the compound's frame (m at scale 1)
   double radius = 0;                   // Sphere: radius at scale 1 (m)
   ConvexPolytope hull;                 // Polytope: vertices about `offset`, compound's axes
+  // The cell of a concave grain's piece (convex_decomposition.h): the cells
+  // of a grain's pieces tile space without overlap, and a piece owns the
+  // contacts whose point lies in its cell. Where the surface of one face runs
+  // across two pieces, a neighbour pressing there meets both pieces with the
+  // full depth; ownership keeps one of the two contacts, not twice the force.
+  // Empty: the piece owns every contact (clusters of spheres).
+  std::vector<CellPlane> cell;
 };
 
 // A compound: at most kMaxCompoundPieces pieces (each can touch a convex

@@ -2,8 +2,27 @@
 // convex shape of its own and collided through the table (dispatch.h) with a
 // cold cache whose direction is the line between the two centres; only
 // touching piece contacts are written, in increasing sub-contact id.
+// Pieces whose bounding spheres are apart are skipped. A contact is kept
+// only if its point lies in the cell of each piece it belongs to (compound.h),
+// widened by its depth: the point lies within half the depth of the piece, so
+// a piece's own contacts are never dropped, and of two pieces meeting a
+// neighbour across their common cut, only the one whose cell holds the
+// contact point keeps it (both only within the depth of the cut).
+// That leaves the corner of the other piece: a neighbour pressing a face near
+// a cut also meets the edge where the cut ends that face, with a smaller
+// depth and a normal tilted towards the cut (measured on a U grain's flat
+// underside: 1.5 times the force within the contact radius of the cut).
+// So two contacts of one pair whose normals lie within kSeamAngle and whose
+// points lie closer than kSeamReach of the smaller piece's bounding radius
+// are one contact across a seam: the deeper is kept. Contacts of a dent or a
+// hook face different ways (the trough's floor and wall: 90 degrees) and are
+// all kept.
 #include "collision/dispatch.h"
 #include "collision/pair_routines.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
 
 namespace grainlab::routines {
 
@@ -21,37 +40,113 @@ PosedShape pose_piece(const PosedShape& c, const CompoundPiece& p) {
   return s;
 }
 
-// Collides two convex shapes with a cold cache; appends a touching result with id `sub`.
-void collide_piece(const PosedShape& a, const PosedShape& b, std::int32_t sub, SubContact* out, int& n) {
+// World radius of a posed piece's bounding sphere about its origin.
+double piece_bound(const PosedShape& c, const CompoundPiece& p) {
+  return c.scale * (p.kind == ShapeKind::Sphere ? p.radius : p.hull.bounding_radius());
+}
+
+// World radius of a posed compound's bounding sphere about its origin.
+double compound_bound(const PosedShape& c) {
+  double r = 0;
+  for (const CompoundPiece& p : c.compound->pieces) r = std::max(r, c.scale * p.offset.norm() + piece_bound(c, p));
+  return r;
+}
+
+// Bounding radius of a convex posed shape about pos; infinite for walls.
+double shape_bound(const PosedShape& s) {
+  if (s.kind == ShapeKind::Sphere) return s.radius;
+  if (s.kind == ShapeKind::Polytope) return s.hull->bounding_radius() * s.scale;
+  return std::numeric_limits<double>::infinity();
+}
+
+bool apart(const PosedShape& a, double ra, const PosedShape& b, double rb) {
+  return std::isfinite(ra) && std::isfinite(rb) && (b.pos - a.pos).squaredNorm() > (ra + rb) * (ra + rb);
+}
+
+// True if `point` (world) lies in the piece's cell, widened by `slack` (m).
+bool owns(const PosedShape& c, const CompoundPiece& p, const Vec3& point, double slack) {
+  if (p.cell.empty()) return true;
+  const Vec3 local = c.rot->transpose() * (point - c.pos) / c.scale;
+  for (const CellPlane& h : p.cell)
+    if (h.n.dot(local) > h.c + slack / c.scale) return false;
+  return true;
+}
+
+// Collides two convex shapes with a cold cache; appends each touching result
+// that `keep` accepts, with id `sub`.
+// `size[k]` is the world bounding radius of the piece(s) of out[k].
+template <class Keep>
+void collide_piece(const PosedShape& a, const PosedShape& b, std::int32_t sub, double piece_size, SubContact* out,
+                   double* size, int& n, Keep keep) {
   PairCache cache;
   const Vec3 d = b.pos - a.pos;
   if (d.squaredNorm() > 0) cache.dir = d;
   SubContact r[kMaxSubContacts];
   const int m = collide_shapes(a, b, cache, r);
   for (int k = 0; k < m && n < kMaxSubContacts; ++k)
-    if (r[k].geo.touching) out[n++] = {r[k].geo, sub};
+    if (r[k].geo.touching && keep(r[k].geo)) {
+      size[n] = piece_size;
+      out[n++] = {r[k].geo, sub};
+    }
+}
+
+constexpr double kSeamCos = 0.866;  // cos(kSeamAngle), kSeamAngle = 30 degrees
+constexpr double kSeamReach = 0.25;
+
+// Keeps the deepest of each group of contacts across a seam (above); the
+// survivors stay in increasing sub-contact id. Returns their number.
+int merge_seams(SubContact* out, const double* size, int n) {
+  bool dropped[kMaxSubContacts] = {};
+  for (int i = 0; i < n; ++i)
+    for (int j = i + 1; j < n; ++j) {
+      if (dropped[i] || dropped[j]) continue;
+      const ContactResult &p = out[i].geo, &q = out[j].geo;
+      const double reach = kSeamReach * std::min(size[i], size[j]);
+      if (p.normal.dot(q.normal) > kSeamCos && (p.point - q.point).squaredNorm() < reach * reach)
+        dropped[p.depth >= q.depth ? j : i] = true;
+    }
+  int m = 0;
+  for (int k = 0; k < n; ++k)
+    if (!dropped[k]) out[m++] = out[k];
+  return m;
 }
 
 }  // namespace
 
 int any_compound(const PosedShape& a, const PosedShape& b, PairCache&, SubContact* out) {
   int n = 0;
+  double size[kMaxSubContacts];
   const auto& pieces = b.compound->pieces;
-  for (std::size_t j = 0; j < pieces.size(); ++j)
-    collide_piece(a, pose_piece(b, pieces[j]), static_cast<std::int32_t>(j), out, n);
-  return n;
+  const double ra = shape_bound(a);
+  for (std::size_t j = 0; j < pieces.size(); ++j) {
+    const PosedShape bj = pose_piece(b, pieces[j]);
+    if (apart(a, ra, bj, piece_bound(b, pieces[j]))) continue;
+    collide_piece(a, bj, static_cast<std::int32_t>(j), piece_bound(b, pieces[j]), out, size, n,
+                  [&](const ContactResult& r) { return owns(b, pieces[j], r.point, r.depth); });
+  }
+  return merge_seams(out, size, n);
 }
 
 int compound_compound(const PosedShape& a, const PosedShape& b, PairCache&, SubContact* out) {
   int n = 0;
+  double size[kMaxSubContacts];
   const auto& pa = a.compound->pieces;
   const auto& pb = b.compound->pieces;
+  const double rb = compound_bound(b);
   for (std::size_t i = 0; i < pa.size(); ++i) {
     const PosedShape ai = pose_piece(a, pa[i]);
-    for (std::size_t j = 0; j < pb.size(); ++j)
-      collide_piece(ai, pose_piece(b, pb[j]), static_cast<std::int32_t>(i * pb.size() + j), out, n);
+    const double rai = piece_bound(a, pa[i]);
+    if (apart(ai, rai, b, rb)) continue;
+    for (std::size_t j = 0; j < pb.size(); ++j) {
+      const PosedShape bj = pose_piece(b, pb[j]);
+      if (apart(ai, rai, bj, piece_bound(b, pb[j]))) continue;
+      collide_piece(ai, bj, static_cast<std::int32_t>(i * pb.size() + j), std::min(rai, piece_bound(b, pb[j])), out,
+                    size, n, [&](const ContactResult& r) {
+                      return owns(a, pa[i], r.point, r.depth) && owns(b, pb[j], r.point, r.depth);
+                    });
+    }
   }
-  return n;
+  return merge_seams(out, size, n);
 }
 
 }  // namespace grainlab::routines

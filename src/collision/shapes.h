@@ -26,6 +26,12 @@ class ConvexPolytope {
   const std::vector<Vec3>& vertices() const { return vertices_; }
   const Vec3& vertex(Index i) const { return vertices_[i]; }
   std::size_t size() const { return vertices_.size(); }
+  // Bytes held by the polytope's arrays (its collision data's memory).
+  std::size_t memory_bytes() const {
+    return vertices_.size() * sizeof(Vec3) + (offsets_.size() + adjacency_.size()) * sizeof(Index) +
+           planes_.size() * sizeof(Plane) + (plane_offsets_.size() + vertex_planes_.size()) * sizeof(Index) +
+           is_edge_.size();
+  }
   // Neighbours of vertex v.
   const Index* neighbours_begin(Index v) const { return adjacency_.data() + offsets_[v]; }
   const Index* neighbours_end(Index v) const { return adjacency_.data() + offsets_[v + 1]; }

@@ -66,14 +66,16 @@ Index Model::add_mesh_shape(const TriMesh& mesh, std::string name) {
   return static_cast<Index>(shapes.size() - 1);
 }
 
-Index Model::add_concave_shape(const TriMesh& mesh, const std::vector<std::vector<Vec3>>& pieces, std::string name) {
+Index Model::add_concave_shape(const TriMesh& mesh, const ConvexDecomposition& dec, std::string name) {
+  const auto& pieces = dec.pieces;
   if (pieces.empty() || pieces.size() > static_cast<std::size_t>(kMaxCompoundPieces))
     input_error("concave shape '{}': {} pieces; give 1 to {}", name, pieces.size(), kMaxCompoundPieces);
   const MassProperties mp = mass_properties(mesh);
   if (!(mp.volume > 0)) input_error("shape '{}': the mesh has no volume", name);
   Shape s = principal_mesh_shape(mesh, mp, std::move(name));
   s.kind = Shape::Kind::Compound;
-  for (const std::vector<Vec3>& points : pieces) {
+  for (std::size_t k = 0; k < pieces.size(); ++k) {
+    const std::vector<Vec3>& points = pieces[k];
     // The piece's points in the principal frame, about their mean (the piece's offset).
     std::vector<Vec3> local;
     Vec3 mean = Vec3::Zero();
@@ -90,6 +92,10 @@ Index Model::add_concave_shape(const TriMesh& mesh, const std::vector<std::vecto
     piece.kind = Shape::Kind::Polytope;
     piece.offset = mean;
     piece.hull = polytope_of(local);
+    // The cell n.p <= c in the principal frame: p = A p' + C, so (A^T n).p' <= c - n.C.
+    if (k < dec.cells.size())
+      for (const HalfSpace& h : dec.cells[k])
+        piece.cell.push_back({mp.principal_axes.transpose() * h.n, h.c - h.n.dot(mp.centroid)});
     s.compound.pieces.push_back(std::move(piece));
   }
   shapes.push_back(std::move(s));

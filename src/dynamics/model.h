@@ -13,6 +13,7 @@
 #include "core/types.h"
 #include "dynamics/contact_law.h"
 #include "dynamics/material.h"
+#include "geometry/convex_decomposition.h"
 #include "geometry/trimesh.h"
 
 #include <string>
@@ -85,9 +86,10 @@ struct Model {
   // principal frame.
   Index add_compound_shape(const std::vector<CompoundPart>& parts, std::string name);
   // A concave grain: mass properties from the exact closed mesh, collision by
-  // the convex hulls of `pieces` (point sets in the mesh's coordinates, e.g.
-  // from decompose_convex; 1 to kMaxCompoundPieces), moved to the principal frame.
-  Index add_concave_shape(const TriMesh& mesh, const std::vector<std::vector<Vec3>>& pieces, std::string name);
+  // the convex hulls of the pieces of `dec` (decompose_convex of that mesh;
+  // 1 to kMaxCompoundPieces), each owning the contacts in its cell, moved to
+  // the principal frame.
+  Index add_concave_shape(const TriMesh& mesh, const ConvexDecomposition& dec, std::string name);
   Index add_material(const Material& m);
 
   // Coefficients of a material pair (valid after finalize()).

@@ -28,15 +28,10 @@ namespace {
 
 using Polygon = std::vector<Vec3>;
 
-struct Plane {
-  Vec3 n;    // the cell is n.p <= c
-  double c;
-};
-
 struct Part {
   std::vector<Polygon> polys;  // the surface inside the part's cell
   std::vector<int> cells;      // voxel centres inside the mesh and the cell
-  std::vector<Plane> planes;   // the cell's bounding planes
+  std::vector<HalfSpace> planes;  // the cell's bounding planes
   std::vector<Vec3> corners;   // corners of the cell inside the mesh (three planes meet there)
   double hull_volume = 0;
   bool final = false;
@@ -339,7 +334,7 @@ ConvexDecomposition decompose_convex(const TriMesh& mesh, const DecompositionOpt
           if (std::abs(a.determinant()) < 1e-6) continue;
           const Vec3 x = a.inverse() * Vec3(p.planes[i].c, p.planes[j].c, cut.c);
           bool in_cell = true;
-          for (const Plane& q : p.planes) in_cell = in_cell && q.n.dot(x) <= q.c + eps;
+          for (const HalfSpace& q : p.planes) in_cell = in_cell && q.n.dot(x) <= q.c + eps;
           if (in_cell && inside_mesh(mesh, x)) {
             l.corners.push_back(x);
             r.corners.push_back(x);
@@ -358,6 +353,7 @@ ConvexDecomposition decompose_convex(const TriMesh& mesh, const DecompositionOpt
   }
   for (const Part& p : parts) {
     out.pieces.push_back(parts.size() == 1 ? mesh.vertices : part_points(p));
+    out.cells.push_back(p.planes);
     out.pieces_volume += p.hull_volume;
   }
   return out;

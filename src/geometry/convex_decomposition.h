@@ -32,8 +32,15 @@ struct DecompositionOptions {
   int grid = 48;             // voxels along the mesh's longest side (for the pieces' own volumes)
 };
 
+// The half-space n.p <= c (n unit).
+struct HalfSpace {
+  Vec3 n = Vec3::UnitZ();
+  double c = 0;
+};
+
 struct ConvexDecomposition {
   std::vector<std::vector<Vec3>> pieces;  // each piece's points (its hull is the piece), mesh units
+  std::vector<std::vector<HalfSpace>> cells;  // each piece's cell (empty for a single piece): disjoint, tiling space
   double volume = 0;                      // exact volume of the mesh
   double hull_volume = 0;                 // volume of the whole mesh's convex hull
   double pieces_volume = 0;               // sum of the pieces' hull volumes (>= volume)

@@ -54,7 +54,7 @@ std::vector<Index> add_grain_shapes(Model& model, const GrainsSpec& spec, std::u
       const double volume = mass_properties(set.meshes[k]).volume;
       shapes.push_back(model.add_sphere_shape(std::cbrt(3 * volume / (4 * std::numbers::pi)), set.names[k]));
     } else if (concave[k]) {
-      shapes.push_back(model.add_concave_shape(set.meshes[k], pieces[k].pieces, set.names[k]));
+      shapes.push_back(model.add_concave_shape(set.meshes[k], pieces[k], set.names[k]));
       ++r.concave_shapes;
       r.pieces += static_cast<int>(pieces[k].pieces.size());
       r.hull_excess += pieces[k].hull_excess();
