@@ -54,7 +54,7 @@ int run_segment(const SegmentArgs& a) {
 
   const ct::ImageHeader h = ct::read_image_header(source);
   ct::check_memory(h.size, a.image);
-  fmt::print(stderr, "ct: {} ({}): {} x {} x {} voxels of {:.4g} x {:.4g} x {:.4g} um (from {})\n", a.image,
+  if (!a.quiet) fmt::print(stderr, "ct: {} ({}): {} x {} x {} voxels of {:.4g} x {:.4g} x {:.4g} um (from {})\n", a.image,
              h.format, h.size[0], h.size[1], h.size[2], h.spacing[0] * 1e6, h.spacing[1] * 1e6, h.spacing[2] * 1e6,
              h.spacing_source);
   ct::Progress progress(!a.quiet);
@@ -64,7 +64,7 @@ int run_segment(const SegmentArgs& a) {
   } else {
     const ct::GreyVolume grey = ct::read_grey_volume(source);
     s = ct::segment_grey(grey, options, progress);
-    fmt::print(stderr,
+    if (!a.quiet) fmt::print(stderr,
                "ct: threshold {:.6g} ({}; pore mean {:.6g}, grain mean {:.6g}), solid fraction {:.3f}, {} pore voxels "
                "filled\n",
                s.threshold, s.otsu ? "Otsu" : "--threshold", s.pore_level, s.solid_level, s.solid_fraction,
@@ -173,7 +173,7 @@ Command add_ct_command(CLI::App& app) {
       ->capture_default_str();
   s->add_option("--format", seg->format, "mesh file format")->check(CLI::IsMember({"stl", "obj"}))->capture_default_str();
   s->add_flag("--force", seg->force, "replace the grain meshes and grains.csv of a non-empty --out folder");
-  s->add_flag("--quiet", seg->quiet, "no progress lines on standard error");
+  s->add_flag("--quiet", seg->quiet, "no progress or information lines on standard error (errors still go there)");
 
   auto* y = ct->add_subcommand(
       "synth",
