@@ -1,10 +1,13 @@
 // The segmentation of the synthetic scan against the grains it was made from.
 #include "ct_fixture.h"
 
+#include "core/timer.h"
 #include "geometry/shape_metrics.h"
 
 #include <cmath>
 #include <cstdio>
+#include <map>
+#include <string>
 #include <set>
 
 namespace grainlab::ct {
@@ -19,14 +22,15 @@ using testing::standard_scene;
 // That is a limit of the resolution, stated here rather than hidden in a global tolerance.
 double roundness_tolerance(const std::string& kind) { return kind == "sub-angular" ? 0.08 : 0.05; }
 
-TEST(CtSegmentation, FindsEveryGrainWithItsVolumeCentroidAndRoundness) {
-  const SyntheticScene& scene = standard_scene();
+// Segments `scene`, checks every grain against its source and prints the figures.
+void check_scene(const SyntheticScene& scene, bool verbose, bool assert_roundness) {
+  std::map<std::string, std::pair<double, double>> by_kind;  // kind -> (sum of |error|, max |error|)
+  std::map<std::string, int> count;
   Progress quiet(false);
   const Segmentation seg = segment_grey(scene.volume, SegmentOptions{}, quiet);
   ASSERT_EQ(seg.grains.size(), scene.grains.size()) << "a grain was merged, split or lost";
   const std::vector<int> match = match_grains(scene, seg);
   EXPECT_EQ(std::set<int>(match.begin(), match.end()).size(), match.size()) << "two true grains matched one";
-  EXPECT_EQ(scene.touching.size(), 2u);
 
   const double voxel = scene.volume.spacing.x();
   double worst_v = 0, worst_c = 0, worst_r = 0;
@@ -37,11 +41,16 @@ TEST(CtSegmentation, FindsEveryGrainWithItsVolumeCentroidAndRoundness) {
     const double dv = s.volume / truth.volume - 1;
     const double dc = (s.centroid - truth.centroid).norm() / voxel;
     const double r_true = shape_metrics(t.mesh).roundness, r_seg = shape_metrics(s.mesh).roundness;
-    std::printf("  grain %zu %-11s volume %+5.2f %%  centroid %.3f voxel  roundness %.3f -> %.3f (%+.3f)\n", g + 1,
+    if (verbose) std::printf("  grain %zu %-11s volume %+5.2f %%  centroid %.3f voxel  roundness %.3f -> %.3f (%+.3f)\n", g + 1,
                 t.kind.c_str(), 100 * dv, dc, r_true, r_seg, r_seg - r_true);
     EXPECT_LT(std::abs(dv), 0.03) << "grain " << g + 1 << " (" << t.kind << ")";
     EXPECT_LT(dc, 1.0) << "grain " << g + 1 << " (" << t.kind << ")";
-    EXPECT_LT(std::abs(r_seg - r_true), roundness_tolerance(t.kind)) << "grain " << g + 1 << " (" << t.kind << ")";
+    if (assert_roundness) {
+      EXPECT_LT(std::abs(r_seg - r_true), roundness_tolerance(t.kind)) << "grain " << g + 1 << " (" << t.kind << ")";
+    }
+    by_kind[t.kind].first += std::abs(r_seg - r_true);
+    by_kind[t.kind].second = std::max(by_kind[t.kind].second, std::abs(r_seg - r_true));
+    ++count[t.kind];
     EXPECT_FALSE(s.border);
     EXPECT_LE(static_cast<int>(s.mesh.faces.size()), s.within_budget ? 2000 : 1 << 20);
     worst_v = std::max(worst_v, std::abs(dv));
@@ -50,6 +59,32 @@ TEST(CtSegmentation, FindsEveryGrainWithItsVolumeCentroidAndRoundness) {
   }
   std::printf("  worst: volume %.2f %%, centroid %.3f voxel, roundness %.3f; threshold %.0f\n", 100 * worst_v, worst_c,
               worst_r, seg.threshold);
+  for (const auto& [kind, e] : by_kind) {
+    std::printf("  %-11s x%2d: roundness error mean %.3f, max %.3f\n", kind.c_str(), count[kind], e.first / count[kind],
+                e.second);
+  }
+}
+
+TEST(CtSegmentation, FindsEveryGrainWithItsVolumeCentroidAndRoundness) {
+  EXPECT_EQ(standard_scene().touching.size(), 2u);
+  check_scene(standard_scene(), true, true);
+}
+
+// The larger scan of docs/ct.md (256^3, 60 grains of 30 voxels, 10 touching
+// pairs): about 45 s, so run by hand:
+//   build/test_ct --gtest_also_run_disabled_tests --gtest_filter='*LargeScan*'
+TEST(CtSegmentation, DISABLED_LargeScan) {
+  SyntheticSpec spec;
+  spec.size = 256;
+  spec.grains = 60;
+  spec.touching_pairs = 10;
+  spec.grain_size = 30;
+  Stopwatch clock;
+  const SyntheticScene scene = make_synthetic_scene(spec);
+  std::printf("  scan made in %.1f s\n", clock.seconds());
+  clock.reset();
+  check_scene(scene, false, false);  // roundness: figures only (30-voxel grains, docs/ct.md)
+  std::printf("  segmented and checked in %.1f s\n", clock.seconds());
 }
 
 // The orientation is the principal frame: its first axis is the grain's long axis.
