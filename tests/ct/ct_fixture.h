@@ -21,7 +21,7 @@ inline const SyntheticScene& standard_scene() {
   return scene;
 }
 
-// A small scan for the format round trips: 48^3, two touching grains and one apart.
+// A small scan for the format round trips: 56^3, two touching grains and one apart.
 inline const SyntheticScene& small_scene() {
   static const SyntheticScene scene = [] {
     SyntheticSpec s;
@@ -34,8 +34,6 @@ inline const SyntheticScene& small_scene() {
   }();
   return scene;
 }
-
-inline SegmentOptions quiet_defaults() { return SegmentOptions{}; }
 
 // For each true grain, the index of the segmented grain with the nearest centroid.
 inline std::vector<int> match_grains(const SyntheticScene& scene, const Segmentation& seg) {
