@@ -16,6 +16,7 @@ packages=(
   zlib1g-dev             # compressed ParaView files
   libgtest-dev libgmock-dev  # tests
   libbenchmark-dev       # micro benchmarks
+  libinsighttoolkit5-dev # ITK 5.2: CT image formats, distance map, h-maxima and watershed (src/ct only)
   libomp-dev             # OpenMP (gcc ships its own libgomp; this is for clang)
   python3 python3-matplotlib  # report plots
 )

@@ -22,4 +22,7 @@ Command add_run_command(CLI::App& app);
 // `grainlab report`: the HTML report of one run folder, or a comparison of several.
 Command add_report_command(CLI::App& app);
 
+// `grainlab ct segment|synth`: X-ray CT volumes to grain meshes, and synthetic scans.
+Command add_ct_command(CLI::App& app);
+
 }  // namespace grainlab::apps

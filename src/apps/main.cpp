@@ -21,7 +21,8 @@ int main(int argc, char** argv) {
   app.add_option("--threads", threads, "worker threads (default: all cores)");
 
   const std::vector<apps::Command> commands = {apps::add_grains_command(app),
-                                               apps::add_run_command(app), apps::add_report_command(app)};
+                                               apps::add_run_command(app), apps::add_report_command(app),
+                                               apps::add_ct_command(app)};
 
   try {
     app.parse(argc, argv);

@@ -1,0 +1,65 @@
+// The only door to ITK. ITK 5.2 bundles its own Eigen 3.3, which cannot share a
+// translation unit with the system Eigen 3.4 that core/types.h brings, so the
+// two ITK files (itk_image_io.cpp, itk_watershed.cpp) see only this header:
+// plain arrays and vectors, no Eigen. Everything else in src/ct calls these.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace grainlab::ct::itk_bridge {
+
+// A grid as ITK gives it: spacing and origin in the file's unit (mm by the
+// formats' convention), direction cosines column by column (column a = image axis a).
+struct Grid {
+  std::array<std::int64_t, 3> size{0, 0, 0};
+  std::array<double, 3> spacing{1, 1, 1};
+  std::array<double, 3> origin{0, 0, 0};
+  std::array<double, 9> direction{1, 0, 0, 0, 1, 0, 0, 0, 1};
+};
+
+// "TIFF", "NRRD", "MetaImage" for a known extension, "" otherwise.
+std::string format_for(const std::string& path);
+
+// What an image file's header says.
+struct Header {
+  std::string format;
+  unsigned dimensions = 0;            // 2 for a single slice
+  std::vector<std::int64_t> extent;   // voxels along each dimension
+  unsigned components = 1;            // 3 for RGB
+  Grid grid;                          // valid when dimensions == 3
+};
+
+// Reads a header (format chosen by extension). Throws InputError naming the file.
+Header read_header(const std::string& path);
+
+// Reads every voxel as float, x fastest. Throws InputError naming the file.
+std::vector<float> read_values(const std::string& path);
+
+// Voxel types written.
+enum class Stored { UInt8, UInt16, UInt32, Float32 };
+
+// Writes voxels (x fastest, already converted to the stored type's range and
+// held in float or uint32) to `path` in the format its extension names;
+// `compress` asks for zlib where the format has it. Throws RunError.
+void write_values(const std::string& path, const Grid& grid, const std::vector<float>& values, Stored stored,
+                  bool compress);
+void write_labels(const std::string& path, const Grid& grid, const std::vector<std::uint32_t>& values,
+                  bool compress);
+
+// Progress callback: fraction done, 0-1.
+using ProgressFn = std::function<void(double)>;
+
+// Splits a binary mask (1 = solid) into grains: Euclidean distance map inside
+// the solid (in voxels), h-maxima of depth `h` (voxels) as markers, marker
+// watershed of the negated distance, restricted to the solid. Every
+// 26-connected solid component gets at least one marker. Returns labels 1..n
+// (0 = pore), in no particular order.
+std::vector<std::uint32_t> distance_watershed(const std::vector<std::uint8_t>& mask,
+                                              const std::array<std::int64_t, 3>& size, double h,
+                                              const ProgressFn& progress);
+
+}  // namespace grainlab::ct::itk_bridge

@@ -1,0 +1,155 @@
+// ITK's readers and writers behind itk_bridge.h: each format's ImageIO object
+// is named explicitly (no factory registration), and ITK's exceptions become
+// InputError or RunError messages naming the file.
+#include "ct/itk_bridge.h"
+
+#include "core/error.h"
+
+#include <itkImage.h>
+#include <itkImageFileReader.h>
+#include <itkImageFileWriter.h>
+#include <itkMetaImageIO.h>
+#include <itkNrrdImageIO.h>
+#include <itkTIFFImageIO.h>
+
+#include <algorithm>
+#include <cctype>
+
+namespace grainlab::ct::itk_bridge {
+
+namespace {
+
+std::string lower_extension(const std::string& path) {
+  const auto dot = path.find_last_of('.');
+  const auto slash = path.find_last_of('/');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
+  std::string ext = path.substr(dot);
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+
+itk::ImageIOBase::Pointer image_io_for(const std::string& path) {
+  const std::string f = format_for(path);
+  if (f == "TIFF") return itk::TIFFImageIO::New().GetPointer();
+  if (f == "NRRD") return itk::NrrdImageIO::New().GetPointer();
+  if (f == "MetaImage") return itk::MetaImageIO::New().GetPointer();
+  input_error("'{}': no ITK reader for this extension", path);
+}
+
+// The first line of an ITK exception's description.
+std::string reason(const itk::ExceptionObject& e) {
+  std::string d = e.GetDescription();
+  const auto nl = d.find('\n');
+  if (nl != std::string::npos) d.resize(nl);
+  return d;
+}
+
+using FloatImage = itk::Image<float, 3>;
+
+template <typename T, typename In>
+void write_as(const std::string& path, const Grid& grid, const std::vector<In>& values, bool compress) {
+  using Image = itk::Image<T, 3>;
+  auto image = Image::New();
+  typename Image::SizeType size;
+  typename Image::SpacingType spacing;
+  typename Image::PointType origin;
+  typename Image::DirectionType direction;
+  for (unsigned a = 0; a < 3; ++a) {
+    size[a] = static_cast<itk::SizeValueType>(grid.size[a]);
+    spacing[a] = grid.spacing[a];
+    origin[a] = grid.origin[a];
+    for (unsigned r = 0; r < 3; ++r) direction(r, a) = grid.direction[3 * a + r];
+  }
+  image->SetRegions(size);
+  image->SetSpacing(spacing);
+  image->SetOrigin(origin);
+  image->SetDirection(direction);
+  image->Allocate();
+  std::transform(values.begin(), values.end(), image->GetBufferPointer(), [](In v) { return static_cast<T>(v); });
+  itk::ImageIOBase::Pointer io = image_io_for(path);
+  io->SetUseCompression(compress);
+  auto writer = itk::ImageFileWriter<Image>::New();
+  writer->SetImageIO(io);
+  writer->SetFileName(path);
+  writer->SetInput(image);
+  try {
+    writer->Update();
+  } catch (const itk::ExceptionObject& e) {
+    throw RunError(fmt::format("cannot write '{}': {}", path, reason(e)));
+  }
+}
+
+}  // namespace
+
+std::string format_for(const std::string& path) {
+  const std::string ext = lower_extension(path);
+  if (ext == ".tif" || ext == ".tiff") return "TIFF";
+  if (ext == ".nrrd" || ext == ".nhdr") return "NRRD";
+  if (ext == ".mha" || ext == ".mhd") return "MetaImage";
+  return "";
+}
+
+Header read_header(const std::string& path) {
+  Header h;
+  h.format = format_for(path);
+  itk::ImageIOBase::Pointer io = image_io_for(path);
+  io->SetFileName(path);
+  try {
+    if (!io->CanReadFile(path.c_str())) {
+      input_error("'{}' is not a readable {} file (a damaged or truncated header, or the wrong extension)", path,
+                  h.format);
+    }
+    io->ReadImageInformation();
+  } catch (const itk::ExceptionObject& e) {
+    input_error("cannot read '{}' as {}: {}", path, h.format, reason(e));
+  }
+  h.dimensions = io->GetNumberOfDimensions();
+  h.components = io->GetNumberOfComponents();
+  for (unsigned a = 0; a < h.dimensions; ++a) h.extent.push_back(static_cast<std::int64_t>(io->GetDimensions(a)));
+  if (h.dimensions == 3) {
+    for (unsigned a = 0; a < 3; ++a) {
+      h.grid.size[a] = h.extent[a];
+      h.grid.spacing[a] = io->GetSpacing(a);
+      h.grid.origin[a] = io->GetOrigin(a);
+      const std::vector<double> d = io->GetDirection(a);
+      for (unsigned r = 0; r < 3; ++r) h.grid.direction[3 * a + r] = d[r];
+    }
+  }
+  return h;
+}
+
+std::vector<float> read_values(const std::string& path) {
+  auto reader = itk::ImageFileReader<FloatImage>::New();
+  reader->SetImageIO(image_io_for(path));
+  reader->SetFileName(path);
+  try {
+    reader->Update();
+  } catch (const itk::ExceptionObject& e) {
+    input_error("cannot read the voxels of '{}' (a truncated or damaged file?): {}", path, reason(e));
+  }
+  FloatImage* image = reader->GetOutput();
+  const float* p = image->GetBufferPointer();
+  return std::vector<float>(p, p + image->GetLargestPossibleRegion().GetNumberOfPixels());
+}
+
+void write_values(const std::string& path, const Grid& grid, const std::vector<float>& values, Stored stored,
+                  bool compress) {
+  switch (stored) {
+    case Stored::UInt8: write_as<std::uint8_t>(path, grid, values, compress); break;
+    case Stored::UInt16: write_as<std::uint16_t>(path, grid, values, compress); break;
+    case Stored::UInt32: write_as<std::uint32_t>(path, grid, values, compress); break;
+    case Stored::Float32: write_as<float>(path, grid, values, compress); break;
+  }
+}
+
+void write_labels(const std::string& path, const Grid& grid, const std::vector<std::uint32_t>& values,
+                  bool compress) {
+  const std::uint32_t top = values.empty() ? 0 : *std::max_element(values.begin(), values.end());
+  if (top <= 65535) {
+    write_as<std::uint16_t>(path, grid, values, compress);
+  } else {
+    write_as<std::uint32_t>(path, grid, values, compress);
+  }
+}
+
+}  // namespace grainlab::ct::itk_bridge

@@ -1,0 +1,152 @@
+// Distance-transform watershed with ITK, behind itk_bridge.h.
+//
+// Touching grains form one solid blob in the thresholded mask. Inside the
+// solid, the Euclidean distance to the nearest pore, d(x), has one hill per
+// grain (its top near the grain's centre) and a saddle at each neck where
+// grains touch. Noise and facets add small spurious hills. h-maxima (the
+// morphological reconstruction by dilation of d - h under d) removes every
+// hill that rises less than h above its saddle, so each remaining regional
+// maximum marks one grain; the marker watershed of -d then floods from those
+// markers and the basins meet at the necks. Two touching grains stay apart
+// when each rises more than h above the neck: min(r_a, r_b) - r_neck > h,
+// with r the largest inscribed radius; a grain's own lobes (a dented grain)
+// stay together when their saddle is within h of the lower top.
+#include "ct/itk_bridge.h"
+
+#include "core/error.h"
+
+#include <itkConnectedComponentImageFilter.h>
+#include <itkHMaximaImageFilter.h>
+#include <itkImage.h>
+#include <itkMorphologicalWatershedFromMarkersImageFilter.h>
+#include <itkRegionalMaximaImageFilter.h>
+#include <itkSignedMaurerDistanceMapImageFilter.h>
+
+#include <algorithm>
+
+namespace grainlab::ct::itk_bridge {
+
+namespace {
+
+using MaskImage = itk::Image<std::uint8_t, 3>;
+using FloatImage = itk::Image<float, 3>;
+using LabelImage = itk::Image<std::uint32_t, 3>;
+
+template <typename Image>
+typename Image::Pointer make_image(const std::array<std::int64_t, 3>& size) {
+  auto image = Image::New();
+  typename Image::SizeType s;
+  for (unsigned a = 0; a < 3; ++a) s[a] = static_cast<itk::SizeValueType>(size[a]);
+  image->SetRegions(s);
+  image->Allocate();
+  return image;
+}
+
+// Forwards an ITK filter's progress into [from, to] of the whole.
+void watch(itk::Object* filter, const ProgressFn& progress, double from, double to) {
+  if (!progress) return;
+  auto* process = dynamic_cast<itk::ProcessObject*>(filter);
+  filter->AddObserver(itk::ProgressEvent(), [process, progress, from, to](const itk::EventObject&) {
+    progress(from + (to - from) * process->GetProgress());
+  });
+}
+
+}  // namespace
+
+std::vector<std::uint32_t> distance_watershed(const std::vector<std::uint8_t>& mask,
+                                              const std::array<std::int64_t, 3>& size, double h,
+                                              const ProgressFn& progress) {
+  const std::size_t n = mask.size();
+  try {
+    // Distance inside the solid (voxels), shifted so that every solid voxel is >= 1 and pores are 0.
+    FloatImage::Pointer height;
+    {
+      auto m = make_image<MaskImage>(size);
+      std::copy(mask.begin(), mask.end(), m->GetBufferPointer());
+      auto dist = itk::SignedMaurerDistanceMapImageFilter<MaskImage, FloatImage>::New();
+      dist->SetInput(m);
+      dist->SetBackgroundValue(0);
+      dist->SetInsideIsPositive(true);
+      dist->SetSquaredDistance(false);
+      dist->SetUseImageSpacing(false);
+      watch(dist, progress, 0.0, 0.25);
+      dist->Update();
+      height = dist->GetOutput();
+      height->DisconnectPipeline();
+      float* d = height->GetBufferPointer();
+      for (std::size_t i = 0; i < n; ++i) d[i] = mask[i] ? std::max(d[i], 0.0f) + 1.0f : 0.0f;
+    }
+
+    // Markers: regional maxima of the h-maxima reconstruction, one label each.
+    LabelImage::Pointer markers;
+    std::uint32_t marker_count = 0;
+    {
+      auto hmax = itk::HMaximaImageFilter<FloatImage, FloatImage>::New();
+      hmax->SetInput(height);
+      hmax->SetHeight(static_cast<float>(h));
+      hmax->SetFullyConnected(true);
+      watch(hmax, progress, 0.25, 0.55);
+      auto peaks = itk::RegionalMaximaImageFilter<FloatImage, MaskImage>::New();
+      peaks->SetInput(hmax->GetOutput());
+      peaks->SetFullyConnected(true);
+      peaks->SetForegroundValue(1);
+      peaks->SetBackgroundValue(0);
+      peaks->SetFlatIsMaxima(false);
+      auto label = itk::ConnectedComponentImageFilter<MaskImage, LabelImage>::New();
+      label->SetInput(peaks->GetOutput());
+      label->SetFullyConnected(true);
+      label->Update();
+      markers = label->GetOutput();
+      markers->DisconnectPipeline();
+      marker_count = static_cast<std::uint32_t>(label->GetObjectCount());
+    }
+    std::uint32_t* mk = markers->GetBufferPointer();
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!mask[i]) mk[i] = 0;
+    }
+
+    // A solid component without a marker (lower than h everywhere) gets one at its highest voxel.
+    {
+      auto m = make_image<MaskImage>(size);
+      std::copy(mask.begin(), mask.end(), m->GetBufferPointer());
+      auto comps = itk::ConnectedComponentImageFilter<MaskImage, LabelImage>::New();
+      comps->SetInput(m);
+      comps->SetFullyConnected(true);
+      comps->Update();
+      const std::uint32_t* c = comps->GetOutput()->GetBufferPointer();
+      const std::size_t count = comps->GetObjectCount();
+      std::vector<char> marked(count + 1, 0);
+      std::vector<std::size_t> top(count + 1, n);
+      const float* d = height->GetBufferPointer();
+      for (std::size_t i = 0; i < n; ++i) {
+        if (!c[i]) continue;
+        if (mk[i]) marked[c[i]] = 1;
+        if (top[c[i]] == n || d[i] > d[top[c[i]]]) top[c[i]] = i;
+      }
+      for (std::size_t k = 1; k <= count; ++k) {
+        if (!marked[k]) mk[top[k]] = ++marker_count;
+      }
+    }
+
+    // Flood -distance from the markers; pores (height 0) are flooded last and cleared after.
+    float* d = height->GetBufferPointer();
+    for (std::size_t i = 0; i < n; ++i) d[i] = -d[i];
+    auto ws = itk::MorphologicalWatershedFromMarkersImageFilter<FloatImage, LabelImage>::New();
+    ws->SetInput(height);
+    ws->SetMarkerImage(markers);
+    ws->SetMarkWatershedLine(false);
+    ws->SetFullyConnected(true);
+    watch(ws, progress, 0.55, 1.0);
+    ws->Update();
+    const std::uint32_t* out = ws->GetOutput()->GetBufferPointer();
+    std::vector<std::uint32_t> labels(n);
+    for (std::size_t i = 0; i < n; ++i) labels[i] = mask[i] ? out[i] : 0;
+    return labels;
+  } catch (const itk::ExceptionObject& e) {
+    throw RunError(fmt::format("the watershed failed inside ITK: {}", e.GetDescription()));
+  } catch (const std::bad_alloc&) {
+    throw RunError("out of memory in the watershed: crop the volume or use a machine with more memory");
+  }
+}
+
+}  // namespace grainlab::ct::itk_bridge
