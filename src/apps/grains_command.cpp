@@ -6,6 +6,7 @@
 #include "geometry/mesh_io.h"
 #include "geometry/shape_metrics.h"
 #include "grains/grain_set.h"
+#include "lab/grain_library.h"
 
 #include <fmt/format.h>
 
@@ -38,6 +39,7 @@ struct GenerateOptions {
 
 struct StatsOptions {
   std::vector<std::string> inputs;
+  std::string representation = "auto";
 };
 
 // Mean, minimum and maximum of one column.
@@ -131,19 +133,34 @@ int run_stats(const StatsOptions& o) {
     }
   }
   fmt::print("file,volume_m3,surface_area_m2,equivalent_diameter_m,long_axis_m,intermediate_axis_m,"
-             "short_axis_m,elongation,flatness,sphericity,convexity,roundness\n");
+             "short_axis_m,elongation,flatness,sphericity,convexity,roundness,simulated_as,pieces,"
+             "collision_excess\n");
   for (const std::string& set : set_order) {
     std::vector<ShapeMetrics> metrics;
+    int as_pieces = 0;
     for (const fs::path& file : sets[set]) {
-      const ShapeMetrics s = shape_metrics(load_mesh(file));
-      fmt::print("{},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f}\n",
+      const TriMesh mesh = load_mesh(file);
+      const ShapeMetrics s = shape_metrics(mesh);
+      // What a run would collide (grains.representation): the hull, or convex pieces.
+      ConvexDecomposition dec;
+      dec.pieces.resize(1);
+      dec.volume = s.volume;
+      dec.pieces_volume = s.volume / s.convexity;
+      if (collides_as_pieces(o.representation, s.convexity)) {
+        DecompositionOptions d;
+        d.max_pieces = kMaxCompoundPieces;
+        dec = decompose_convex(mesh, d);
+      }
+      as_pieces += dec.pieces.size() > 1;
+      fmt::print("{},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{},{},{:.4f}\n",
                  file.string(), s.volume, s.surface_area, s.equivalent_diameter, s.long_axis,
                  s.intermediate_axis, s.short_axis, s.elongation, s.flatness, s.sphericity, s.convexity,
-                 s.roundness);
+                 s.roundness, dec.pieces.size() > 1 ? "pieces" : "hull", dec.pieces.size(), dec.excess());
       metrics.push_back(s);
     }
     std::fflush(stdout);
-    fmt::print(stderr, "{}: {}\n", set, set_summary(metrics));
+    fmt::print(stderr, "{}: {}; simulated as convex pieces: {} of {} (grains.representation = {})\n", set,
+               set_summary(metrics), as_pieces, metrics.size(), o.representation);
   }
   return 0;
 }
@@ -207,8 +224,16 @@ Command add_grains_command(CLI::App& app) {
       "long/intermediate/short_axis_m (extents along the principal axes of inertia), elongation (I/L),\n"
       "flatness (S/I), sphericity (area of the equal-volume sphere / surface area), convexity\n"
       "(volume / convex hull volume) and roundness (Wadell, after Zheng & Hryciw, mean of the three\n"
-      "principal projections). A one-line summary per set (folder) goes to standard error.");
+      "principal projections). The last columns say what a run would collide (grains.representation):\n"
+      "simulated_as is 'hull' (the convex hull) or 'pieces' (convex pieces that keep the dents; mass\n"
+      "properties always come from the mesh), pieces is their number, and collision_excess is the\n"
+      "volume they fill beyond the grain, as a fraction of its volume (the hull's is 1/convexity - 1).\n"
+      "A one-line summary per set (folder) goes to standard error.");
   stats->add_option("files", s->inputs, "mesh files, or folders of them (each folder is one set)")->required();
+  stats->add_option("--representation", s->representation,
+                    "collision shape to report: auto (pieces below convexity 0.98), hull or concave")
+      ->check(CLI::IsMember({"auto", "hull", "concave"}))
+      ->capture_default_str();
 
   const Command index = add_grains_index_command(*grains);
   return [gen, stats, g, s, index]() {

@@ -130,9 +130,12 @@ int run(const RunOptions& o) {
 
   const World& w = test.world();
   const double shear_speed = summary_value(test, "shear_speed_m_per_s");
-  fmt::print("grainlab run: {}, {} grains ({} preset), box {:.1f} x {:.1f} x {:.1f} mm, {:.0f} kPa, "
+  const std::string source = !spec.grains.scan.empty()     ? "scan " + spec.grains.scan
+                             : !spec.grains.folder.empty() ? "folder " + spec.grains.folder
+                                                           : spec.grains.preset + " preset";
+  fmt::print("grainlab run: {}, {} grains ({}), box {:.1f} x {:.1f} x {:.1f} mm, {:.0f} kPa, "
              "dt {:.3g} s, density scaling {:g}{}, {} threads\n",
-             spec.test, w.model.bodies.size(), spec.grains.folder.empty() ? spec.grains.preset : spec.grains.folder,
+             spec.test, w.model.bodies.size(), source,
              spec.box.length * 1e3, spec.box.width * 1e3, spec.box.height * 1e3,
              spec.consolidation.normal_stress * 1e-3, test.time_step(), w.model.density_scale,
              shear_speed > 0 ? fmt::format(", shear speed {:.3g} mm/s", shear_speed * 1e3) : "",

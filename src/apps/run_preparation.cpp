@@ -29,6 +29,14 @@ PreparedRun prepare_run(const DirectShearSpec& spec, const fs::path& out, bool r
     run.test = make_lab_test(r.test, r);
     return run;
   }
+  if (!spec.grains.scan.empty()) {
+    // A scanned specimen is consolidated as scanned: no index densities, no deposition friction.
+    fmt::print("placing the grains of the scan {} where they were scanned, then consolidating\n", spec.grains.scan);
+    run.test = make_lab_test(r.test, r);
+    fs::create_directories(out);
+    write_json_file(record_file, run.record);
+    return run;
+  }
   check_specimen_fits(spec);
   const auto print = [](const std::string& line) {
     fmt::print("  {}\n", line);

@@ -50,6 +50,11 @@ const std::array kFields{
     GL_FIELD("grains", "d_max", grains.d_max, "m, largest sieve size (0.841 mm: passing sieve #20)"),
     GL_FIELD("grains", "convexity", grains.convexity,
              "generated grains: volume / convex hull volume, 0.8-1 (< 1 bites two dents into each grain)"),
+    GL_FIELD("grains", "scan", grains.scan,
+             "if not empty: a folder from `grainlab ct segment` (grains.csv and meshes): its grains are placed "
+             "where they were scanned and consolidated, without deposition (preset and folder are ignored)"),
+    GL_FIELD("grains", "scan_border", grains.scan_border,
+             "scanned grains touching the image border (cut by it): drop | keep"),
     GL_FIELD("grains", "representation", grains.representation,
              "collision shape: auto (concave pieces below convexity 0.98, else the hull) | hull | concave"),
 
@@ -367,6 +372,19 @@ void validate_spec(const DirectShearSpec& spec_in, const std::string& source, co
        fmt::format("larger than grains.d_min = {} (m; the sieve range is [d_min, d_max])", g.d_min));
   need(g.convexity >= kMinConvexity && g.convexity <= 1, "grains.convexity", g.convexity,
        fmt::format("in [{}, 1] (volume over convex hull volume; 1 = convex grains)", kMinConvexity));
+  if (!g.scan.empty()) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(std::filesystem::path(g.scan) / "grains.csv", ec)) {
+      int line = 0;
+      if (lines)
+        if (const auto it = lines->find("grains.scan"); it != lines->end()) line = it->second;
+      input_error("{}: grains.scan = {}: no grains.csv there (relative paths start at the working directory {}). "
+                  "Give the folder that `grainlab ct segment IMAGE --out DIR` wrote, or remove grains.scan.",
+                  where(source, line), toml_string(g.scan), std::filesystem::current_path(ec).string());
+    }
+  }
+  need_s(g.scan_border == "drop" || g.scan_border == "keep", "grains.scan_border", g.scan_border,
+         "one of \"drop\", \"keep\"");
   need_s(g.representation == "auto" || g.representation == "hull" || g.representation == "concave",
          "grains.representation", g.representation, "one of \"auto\", \"hull\", \"concave\"");
 

@@ -3,6 +3,7 @@
 #include "lab/direct_shear.h"
 
 #include "core/error.h"
+#include "lab/scanned_specimen.h"
 
 #include <algorithm>
 #include <cmath>
@@ -68,7 +69,8 @@ DirectShearTest::DirectShearTest(const DirectShearSpec& spec) : spec_(spec) {
   wall.name = "wall";
   wall.friction = spec.material.wall_friction;  // mixes by the minimum: lubricated walls stay lubricated
   const Index wall_material = m.add_material(wall);
-  specimen_ = place_loose_specimen(world_, spec, grain_material_);
+  specimen_ = spec.grains.scan.empty() ? place_loose_specimen(world_, spec, grain_material_)
+                                       : place_scanned_specimen(world_, spec, grain_material_);
 
   // Density scaling (automatic: S = 100). At a fixed inertial number it does
   // not change the number of shear steps (dt and the shear speed both grow
@@ -94,7 +96,13 @@ DirectShearTest::DirectShearTest(const DirectShearSpec& spec) : spec_(spec) {
   world_.add_controller([this](World& w, double dt) {
     if (p_.phase != ShearPhase::Deposit && p_.phase != ShearPhase::Done) servo_.control(w, dt);
   });
-  enter(ShearPhase::Deposit);
+  if (specimen_.scan.grains > 0) {
+    // A scanned specimen is consolidated where it was scanned (scanned_specimen.h).
+    lower_cap_onto_grains(world_, Cap, mean_diameter());
+    enter(ShearPhase::Consolidate);
+  } else {
+    enter(ShearPhase::Deposit);
+  }
 }
 
 void DirectShearTest::apply_phase_overrides() {
@@ -148,7 +156,7 @@ bool DirectShearTest::check_rest(ShearPhase p) {
 }
 
 void DirectShearTest::check_preparation(double e_whole, double e_bulk, const char* when) const {
-  if (accept_any_density_) return;
+  if (accept_any_density_ || specimen_.scan.grains > 0) return;  // a scan's density is the scan's
   const auto& s = spec_.specimen;
   const bool own = spec_.targets_own_indices();
   const double e = own ? e_bulk : e_whole, target = spec_.target_void_ratio();

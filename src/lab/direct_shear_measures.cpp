@@ -128,11 +128,17 @@ std::vector<SummaryValue> DirectShearTest::summary() const {
           {"final", "dilation_angle_deg", s.final_dilation_angle_deg},
           {"final", "void_ratio", s.final_void_ratio}};
   const GrainRepresentation& r = specimen_.representation;
-  v.push_back({"grains", "concave_shapes", static_cast<double>(r.concave_shapes)});
+  v.push_back({"grain_shapes", "concave_shapes", static_cast<double>(r.concave_shapes)});
   if (r.concave_shapes > 0) {
-    v.push_back({"grains", "pieces_per_concave_shape", static_cast<double>(r.pieces) / r.concave_shapes});
-    v.push_back({"grains", "hull_excess_volume_fraction", r.hull_excess});
-    v.push_back({"grains", "pieces_excess_volume_fraction", r.pieces_excess});
+    v.push_back({"grain_shapes", "pieces_per_concave_shape", static_cast<double>(r.pieces) / r.concave_shapes});
+    v.push_back({"grain_shapes", "hull_excess_volume_fraction", r.hull_excess});
+    v.push_back({"grain_shapes", "pieces_excess_volume_fraction", r.pieces_excess});
+  }
+  if (specimen_.scan.grains > 0) {
+    v.push_back({"scan", "grains", static_cast<double>(specimen_.scan.grains)});
+    v.push_back({"scan", "border_grains_dropped", static_cast<double>(specimen_.scan.border_dropped)});
+    v.push_back({"scan", "position_spread", specimen_.scan.spread});
+    v.push_back({"scan", "void_ratio", specimen_.scan.void_ratio});
   }
   if (spec_.own_indices_known()) {
     v.push_back({"preparation", "relative_density_own", achieved_own_relative_density()});

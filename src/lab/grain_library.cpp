@@ -28,21 +28,21 @@ GrainSet make_grain_set(const GrainsSpec& spec, std::uint64_t seed) {
   return generate_grain_set(g, spec.shapes, seed, sieve);
 }
 
-std::vector<Index> add_grain_shapes(Model& model, const GrainsSpec& spec, std::uint64_t seed,
-                                    GrainRepresentation* report) {
-  const GrainSet set = make_grain_set(spec, seed);
-  const int n = static_cast<int>(set.meshes.size());
+std::vector<Index> add_mesh_shapes(Model& model, const std::vector<TriMesh>& meshes,
+                                   const std::vector<std::string>& names, bool spheres,
+                                   const std::string& representation, GrainRepresentation* report) {
+  const int n = static_cast<int>(meshes.size());
   // Decompose first (in parallel: a 2000-face grain takes about 2 s), then add in order.
   std::vector<ConvexDecomposition> pieces(n);
   std::vector<char> concave(n, 0);
-  if (!set.spheres) {
+  if (!spheres) {
 #pragma omp parallel for schedule(dynamic)
     for (int k = 0; k < n; ++k) {
-      concave[k] = collides_as_pieces(spec.representation, convexity(set.meshes[k]));
+      concave[k] = collides_as_pieces(representation, convexity(meshes[k]));
       if (concave[k]) {
         DecompositionOptions o;
         o.max_pieces = kMaxCompoundPieces;
-        pieces[k] = decompose_convex(set.meshes[k], o);
+        pieces[k] = decompose_convex(meshes[k], o);
         if (pieces[k].pieces.size() == 1) concave[k] = 0;  // convex after all: the hull path
       }
     }
@@ -50,17 +50,17 @@ std::vector<Index> add_grain_shapes(Model& model, const GrainsSpec& spec, std::u
   GrainRepresentation r;
   std::vector<Index> shapes;
   for (int k = 0; k < n; ++k) {
-    if (set.spheres) {
-      const double volume = mass_properties(set.meshes[k]).volume;
-      shapes.push_back(model.add_sphere_shape(std::cbrt(3 * volume / (4 * std::numbers::pi)), set.names[k]));
+    if (spheres) {
+      const double volume = mass_properties(meshes[k]).volume;
+      shapes.push_back(model.add_sphere_shape(std::cbrt(3 * volume / (4 * std::numbers::pi)), names[k]));
     } else if (concave[k]) {
-      shapes.push_back(model.add_concave_shape(set.meshes[k], pieces[k], set.names[k]));
+      shapes.push_back(model.add_concave_shape(meshes[k], pieces[k], names[k]));
       ++r.concave_shapes;
       r.pieces += static_cast<int>(pieces[k].pieces.size());
       r.hull_excess += pieces[k].hull_excess();
       r.pieces_excess += pieces[k].excess();
     } else {
-      shapes.push_back(model.add_mesh_shape(set.meshes[k], set.names[k]));
+      shapes.push_back(model.add_mesh_shape(meshes[k], names[k]));
     }
   }
   if (r.concave_shapes > 0) {
@@ -70,6 +70,12 @@ std::vector<Index> add_grain_shapes(Model& model, const GrainsSpec& spec, std::u
   r.shapes = n;
   if (report) *report = r;
   return shapes;
+}
+
+std::vector<Index> add_grain_shapes(Model& model, const GrainsSpec& spec, std::uint64_t seed,
+                                    GrainRepresentation* report) {
+  const GrainSet set = make_grain_set(spec, seed);
+  return add_mesh_shapes(model, set.meshes, set.names, set.spheres, spec.representation, report);
 }
 
 }  // namespace grainlab

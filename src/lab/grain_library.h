@@ -28,6 +28,13 @@ bool collides_as_pieces(const std::string& representation, double convexity);
 // or imported from the folder.
 GrainSet make_grain_set(const GrainsSpec& spec, std::uint64_t seed);
 
+// Adds one shape per mesh (scale 1, meshes in metres) to `model`: analytic
+// spheres of equal volume if `spheres`; else the hull, or convex pieces
+// where `representation` asks for them (decomposed in parallel).
+std::vector<Index> add_mesh_shapes(Model& model, const std::vector<TriMesh>& meshes,
+                                   const std::vector<std::string>& names, bool spheres,
+                                   const std::string& representation, GrainRepresentation* report = nullptr);
+
 // Adds spec.shapes grain shapes (generated from the preset, or imported from
 // the folder) at their physical size to `model`, and returns their indices.
 // Glass beads become analytic spheres; concave grains (spec.representation)

@@ -31,6 +31,12 @@ struct Specimen {
   double mean_mass = 0;      // kg, true mass
   double fill_top = 0;       // m, top of the loose fill
   GrainRepresentation representation;  // how the shapes are collided
+  struct Scan {                        // a specimen from a segmented scan (scanned_specimen.h)
+    int grains = 0;                    // placed (0: not a scan)
+    int border_dropped = 0;            // left out: touching the image border
+    double spread = 1;                 // factor on the positions about the scan's centre
+    double void_ratio = 0;             // of the scanned grains' bounding box: V_box / V_solid - 1
+  } scan;
 };
 
 // Adds the grain shapes and the grains (material `grain_material`) of `spec`

@@ -95,3 +95,34 @@ TEST_F(RunCommand, MissingConfigFileIsRefused) {
 }
 
 }  // namespace
+
+namespace {
+
+// From a 3D image to a consolidated specimen in two commands (issue 12):
+// `ct segment` a synthetic scan, then `run` with grains.scan.
+TEST_F(RunCommand, AScanIsSegmentedThenRunFromWhereItsGrainsWere) {
+  const fs::path scan = dir_ / "scan.nrrd", grains = dir_ / "grains";
+  ASSERT_EQ(grainlab("ct synth --out " + scan.string()).exit_code, 0);
+  const Result seg = grainlab("ct segment " + scan.string() + " --out " + grains.string() + " --quiet");
+  ASSERT_EQ(seg.exit_code, 0) << seg.output;
+  const Result r = grainlab(config("[grains]\nscan = \"" + grains.string() +
+                                   "\"\nscan_border = \"keep\"\n[box]\nlength = 0.0045\nwidth = 0.0045\n"
+                                   "height = 0.003\n[shear]\nfinal_strain = 0.002\n").string().insert(0, "run --no-report --quiet "));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::ifstream json(dir_ / "out" / "run.json");
+  const std::string text((std::istreambuf_iterator<char>(json)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("\"scan\""), std::string::npos);
+  EXPECT_NE(text.find("\"position_spread\""), std::string::npos);
+  EXPECT_NE(text.find("\"grains\": 8"), std::string::npos) << text.substr(0, 400);  // every grain of the scan
+}
+
+TEST_F(RunCommand, AScanFolderWithoutGrainsCsvIsRefused) {
+  fs::create_directories(dir_ / "empty");
+  const Result r = grainlab("run " + config("[grains]\nscan = \"" + (dir_ / "empty").string() + "\"\n").string());
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.output.find("no grains.csv there"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("grainlab ct segment"), std::string::npos) << r.output;
+  EXPECT_TRUE(wrote_nothing());
+}
+
+}  // namespace

@@ -39,13 +39,14 @@ TEST(GrainsCommand, GenerateThenStats) {
   std::string header;
   std::getline(lines, header);
   EXPECT_CONTAINS(header, "file,volume_m3,");
-  EXPECT_CONTAINS(header, ",roundness");
+  EXPECT_CONTAINS(header, ",roundness,simulated_as,pieces,collision_excess");
   int rows = 0;
   for (std::string line; std::getline(lines, line);) rows += !line.empty();
   EXPECT_EQ(rows, 3);
   const std::string err = slurp(dir / "stats.err");
   EXPECT_CONTAINS(err, "3 grains");
   EXPECT_CONTAINS(err, "roundness");
+  EXPECT_CONTAINS(err, "simulated as convex pieces: 0 of 3");  // convex grains: their hulls
 }
 
 TEST(GrainsCommand, UnknownPresetIsRefused) {
@@ -66,6 +67,9 @@ TEST(GrainsCommand, ConvexityDentsTheGrainsAndStatsMeasureIt) {
   const std::string stats = bin + " grains stats " + out + " > " + (dir / "stats.csv").string() + " 2>&1";
   ASSERT_EQ(std::system(stats.c_str()), 0) << slurp(dir / "stats.csv");
   EXPECT_CONTAINS(slurp(dir / "stats.csv"), "convexity 0.90");
+  // Below convexity 0.98, a run collides them as convex pieces ("auto").
+  EXPECT_CONTAINS(slurp(dir / "stats.csv"), ",pieces,");
+  EXPECT_CONTAINS(slurp(dir / "stats.csv"), "simulated as convex pieces: 2 of 2");
   // Below what two dents reach: refused, nothing written.
   const std::string deep = bin + " grains generate --preset sub-angular --convexity 0.5 --out " +
                            (dir / "deep").string() + " > " + (dir / "deep.txt").string() + " 2>&1";

@@ -2,6 +2,9 @@
 // field-by-field comparison of two run specs.
 #pragma once
 
+#include <filesystem>
+#include <fstream>
+
 #include "dynamics/laws/registry.h"
 #include "lab/direct_shear_spec.h"
 
@@ -97,6 +100,14 @@ inline void expect_same_spec(const DirectShearSpec& a, const DirectShearSpec& b)
   EXPECT_EQ(a.seed, b.seed);
 }
 
+// A folder holding a grains.csv (header only), so that grains.scan validates.
+inline std::filesystem::path scan_folder_for_config_tests() {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "grainlab-config-test-scan";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "grains.csv") << "id,file,x_m,y_m,z_m,qw,qx,qy,qz,volume_m3,equivalent_diameter_m,border\n";
+  return dir;
+}
+
 // A spec with a non-default value in every field the config file holds.
 inline DirectShearSpec all_fields_changed() {
   DirectShearSpec s;
@@ -104,7 +115,16 @@ inline DirectShearSpec all_fields_changed() {
   s.test = "oedometer";
   s.oedometer.stresses = {25e3, 1.0 / 3.0 * 1e5, 8e5};
   s.triaxial.final_strain = 0.3;
-  s.grains = {"angular", "/tmp", 7, 321, 0.5e-3 + 1e-19, 0.9e-3};
+  s.grains.preset = "angular";
+  s.grains.folder = "/tmp";
+  s.grains.shapes = 7;
+  s.grains.faces = 321;
+  s.grains.d_min = 0.5e-3 + 1e-19;
+  s.grains.d_max = 0.9e-3;
+  s.grains.convexity = 0.85;
+  s.grains.scan = scan_folder_for_config_tests().string();
+  s.grains.scan_border = "keep";
+  s.grains.representation = "concave";
   s.material.preset = "ottawa";  // the explicit values below override it
   s.material.law = contact_law<HertzUserLaw>();
   s.material.grain.density = 2500.125;
