@@ -11,7 +11,7 @@
 #include "core/parallel.h"
 #include "core/timer.h"
 #include "io/analysis_files.h"
-#include "io/atomic_file.h"
+#include "core/atomic_file.h"
 #include "io/checkpoint.h"
 #include "io/config.h"
 #include "io/json.h"

@@ -1,7 +1,7 @@
 #include "ct/raw_volume.h"
 
 #include "core/error.h"
-#include "ct/temp_file.h"
+#include "core/atomic_file.h"
 
 #include <algorithm>
 #include <bit>
@@ -99,9 +99,9 @@ std::vector<float> read_raw_values(const fs::path& path, const RawLayout& layout
 
 void write_raw_volume(const GreyVolume& volume, const fs::path& path, VoxelType type) {
   switch (type) {
-    case VoxelType::UInt8: write_bytes_atomically(path, pack<std::uint8_t>(volume)); break;
-    case VoxelType::UInt16: write_bytes_atomically(path, pack<std::uint16_t>(volume)); break;
-    case VoxelType::Float32: write_bytes_atomically(path, pack<float>(volume)); break;
+    case VoxelType::UInt8: write_file_atomically(path, pack<std::uint8_t>(volume)); break;
+    case VoxelType::UInt16: write_file_atomically(path, pack<std::uint16_t>(volume)); break;
+    case VoxelType::Float32: write_file_atomically(path, pack<float>(volume)); break;
   }
 }
 

@@ -1,7 +1,7 @@
 #include "ct/segmentation_files.h"
 
 #include "core/error.h"
-#include "ct/temp_file.h"
+#include "core/atomic_file.h"
 #include "geometry/mesh_io.h"
 
 #include <fmt/format.h>
@@ -71,7 +71,7 @@ void write_segmentation(const Segmentation& s, const fs::path& out, bool force, 
         write_obj(g.mesh, p);
       }
     }
-    write_bytes_atomically(staging / "grains.csv", grains_csv(s, mesh_format));
+    write_file_atomically(staging / "grains.csv", grains_csv(s, mesh_format));
 
     const fs::path final_dir = parent / name;
     if (!fs::exists(final_dir)) {

@@ -30,21 +30,4 @@ void commit_temporary(const fs::path& tmp, const fs::path& path) {
   }
 }
 
-void write_bytes_atomically(const fs::path& path, std::string_view bytes) {
-  const fs::path tmp = temporary_sibling(path);
-  {
-    std::ofstream out(tmp, std::ios::binary);
-    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    out.flush();
-    if (!out) {
-      std::error_code ec;
-      fs::remove(tmp, ec);
-      throw RunError(fmt::format("cannot write '{}' ({} bytes): check that the folder exists, is writable and "
-                                 "the disk is not full",
-                                 path.string(), bytes.size()));
-    }
-  }
-  commit_temporary(tmp, path);
-}
-
 }  // namespace grainlab::ct

@@ -1,6 +1,6 @@
 // Files written under a temporary name in their own folder and renamed into
 // place when complete (rename is atomic within one file system), so a killed
-// run leaves no torn file. (io/atomic_file.h does this for io's writers; ct
+// run leaves no torn file. (core/atomic_file.h does this for io's writers; ct
 // sits below io, so it has this small helper of its own.)
 #pragma once
 
@@ -16,8 +16,5 @@ std::filesystem::path temporary_sibling(const std::filesystem::path& path);
 // Renames a complete temporary file onto `path`; removes it and throws
 // RunError naming `path` on failure.
 void commit_temporary(const std::filesystem::path& tmp, const std::filesystem::path& path);
-
-// Writes `bytes` to `path` through a temporary sibling.
-void write_bytes_atomically(const std::filesystem::path& path, std::string_view bytes);
 
 }  // namespace grainlab::ct

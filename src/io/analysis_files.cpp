@@ -4,7 +4,7 @@
 #include "analysis/dilation.h"
 #include "analysis/force_chains.h"
 #include "core/error.h"
-#include "io/atomic_file.h"
+#include "core/atomic_file.h"
 #include "io/json.h"
 #include "io/run_summary.h"
 #include "io/shear_analysis.h"

@@ -15,7 +15,7 @@
 
 #include "core/bytes.h"
 #include "core/error.h"
-#include "io/atomic_file.h"
+#include "core/atomic_file.h"
 #include "io/config.h"
 
 #include <fmt/format.h>

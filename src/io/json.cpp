@@ -3,7 +3,7 @@
 #include "io/json.h"
 
 #include "core/error.h"
-#include "io/atomic_file.h"
+#include "core/atomic_file.h"
 #include "io/spec_fields.h"
 
 #include <fstream>

@@ -1,7 +1,7 @@
 // VTK XML PolyData and .pvd writing (see vtk_writer.h for the encoding).
 #include "io/vtk_writer.h"
 
-#include "io/atomic_file.h"
+#include "core/atomic_file.h"
 #include "io/base64.h"
 #include "io/zlib_blocks.h"
 

@@ -1,6 +1,6 @@
 // Atomic writes: the file appears whole, replaces an old one, and a failed
 // write leaves nothing behind.
-#include "io/atomic_file.h"
+#include "core/atomic_file.h"
 
 #include "core/error.h"
 #include "io_test_helpers.h"

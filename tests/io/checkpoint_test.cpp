@@ -3,7 +3,7 @@
 #include "io/checkpoint.h"
 
 #include "core/error.h"
-#include "io/atomic_file.h"
+#include "core/atomic_file.h"
 #include "io/config.h"
 #include "io_test_helpers.h"
 

@@ -4,7 +4,7 @@
 #include "io/config.h"
 
 #include "core/error.h"
-#include "io/atomic_file.h"
+#include "core/atomic_file.h"
 #include "io/json.h"
 #include "io_test_helpers.h"
 #include "lab/sand_presets.h"

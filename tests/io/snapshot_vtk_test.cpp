@@ -6,7 +6,7 @@
 
 #include "dynamics/world.h"
 #include "geometry/primitives.h"
-#include "io/atomic_file.h"
+#include "core/atomic_file.h"
 #include "io/vtk_reader.h"
 #include "io_test_helpers.h"
 #include "vtk_test_helpers.h"

@@ -2,7 +2,7 @@
 #include "io/table.h"
 
 #include "core/error.h"
-#include "io/atomic_file.h"
+#include "core/atomic_file.h"
 #include "io_test_helpers.h"
 
 #include <gtest/gtest.h>

@@ -7,7 +7,7 @@
 #include "io/vtk_writer.h"
 
 #include "core/error.h"
-#include "io/atomic_file.h"
+#include "core/atomic_file.h"
 #include "io/base64.h"
 #include "io_test_helpers.h"
 #include "vtk_test_helpers.h"

@@ -1,6 +1,6 @@
 // write_file_atomically: POSIX open/write/fsync/rename, then fsync of the
 // folder so the rename itself survives a crash.
-#include "io/atomic_file.h"
+#include "core/atomic_file.h"
 
 #include "core/error.h"
 
