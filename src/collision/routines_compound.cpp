@@ -17,6 +17,11 @@
 // are one contact across a seam: the deeper is kept. Contacts of a dent or a
 // hook face different ways (the trough's floor and wall: 90 degrees) and are
 // all kept.
+// A piece pair is also skipped when a plane perpendicular to the pair's
+// direction n separates the two pieces: the largest n.x over piece i of A is
+// below the smallest over piece j of B (exact for any n; n is the pair's
+// deepest normal from the last step, kept in its PairCache, else the line
+// between the centres). Skipping only separated pairs changes no contact.
 #include "collision/dispatch.h"
 #include "collision/pair_routines.h"
 
@@ -57,6 +62,30 @@ double shape_bound(const PosedShape& s) {
   if (s.kind == ShapeKind::Sphere) return s.radius;
   if (s.kind == ShapeKind::Polytope) return s.hull->bounding_radius() * s.scale;
   return std::numeric_limits<double>::infinity();
+}
+
+// max over the posed shape of d.x; +infinity for walls (no bound).
+double support_value(const PosedShape& s, const Vec3& d) {
+  if (s.kind == ShapeKind::Sphere) return d.dot(s.pos) + s.radius;
+  if (s.kind == ShapeKind::Polytope) {
+    const Vec3 local = s.rot->transpose() * d;
+    return d.dot(s.pos) + s.scale * local.dot(s.hull->vertex(s.hull->support_index(local, 0)));
+  }
+  return std::numeric_limits<double>::infinity();
+}
+
+// The direction to test separating planes along: the last deepest normal, else the centre line.
+Vec3 pair_direction(const PosedShape& a, const PosedShape& b, const PairCache& cache) {
+  if (cache.warm) return cache.dir;
+  const Vec3 d = b.pos - a.pos;
+  return d.squaredNorm() > 0 ? Vec3(d.normalized()) : Vec3::UnitZ();
+}
+
+// Keeps the deepest contact's normal for the next step's pair direction.
+void remember_direction(PairCache& cache, const SubContact* out, int n) {
+  cache.warm = n > 0;
+  for (int k = 0; k < n; ++k)
+    if (k == 0 || out[k].geo.depth > out[0].geo.depth) cache.dir = out[k].geo.normal;
 }
 
 bool apart(const PosedShape& a, double ra, const PosedShape& b, double rb) {
@@ -113,31 +142,42 @@ int merge_seams(SubContact* out, const double* size, int n) {
 
 }  // namespace
 
-int any_compound(const PosedShape& a, const PosedShape& b, PairCache&, SubContact* out) {
+int any_compound(const PosedShape& a, const PosedShape& b, PairCache& cache, SubContact* out) {
   int n = 0;
   double size[kMaxSubContacts];
   const auto& pieces = b.compound->pieces;
   const double ra = shape_bound(a);
+  const Vec3 dir = pair_direction(a, b, cache);
+  const double top_a = support_value(a, dir);
   for (std::size_t j = 0; j < pieces.size(); ++j) {
     const PosedShape bj = pose_piece(b, pieces[j]);
     if (apart(a, ra, bj, piece_bound(b, pieces[j]))) continue;
+    if (top_a < -support_value(bj, -dir)) continue;  // a plane along dir separates them
     collide_piece(a, bj, static_cast<std::int32_t>(j), piece_bound(b, pieces[j]), out, size, n,
                   [&](const ContactResult& r) { return owns(b, pieces[j], r.point, r.depth); });
   }
-  return merge_seams(out, size, n);
+  n = merge_seams(out, size, n);
+  remember_direction(cache, out, n);
+  return n;
 }
 
-int compound_compound(const PosedShape& a, const PosedShape& b, PairCache&, SubContact* out) {
+int compound_compound(const PosedShape& a, const PosedShape& b, PairCache& cache, SubContact* out) {
   int n = 0;
   double size[kMaxSubContacts];
   const auto& pa = a.compound->pieces;
   const auto& pb = b.compound->pieces;
   const double rb = compound_bound(b);
+  const Vec3 dir = pair_direction(a, b, cache);
+  // The lowest point of each piece of B along dir.
+  double low_b[kMaxCompoundPieces];
+  for (std::size_t j = 0; j < pb.size(); ++j) low_b[j] = -support_value(pose_piece(b, pb[j]), -dir);
   for (std::size_t i = 0; i < pa.size(); ++i) {
     const PosedShape ai = pose_piece(a, pa[i]);
     const double rai = piece_bound(a, pa[i]);
     if (apart(ai, rai, b, rb)) continue;
+    const double top_ai = support_value(ai, dir);
     for (std::size_t j = 0; j < pb.size(); ++j) {
+      if (top_ai < low_b[j]) continue;  // a plane along dir separates them
       const PosedShape bj = pose_piece(b, pb[j]);
       if (apart(ai, rai, bj, piece_bound(b, pb[j]))) continue;
       collide_piece(ai, bj, static_cast<std::int32_t>(i * pb.size() + j), std::min(rai, piece_bound(b, pb[j])), out,
@@ -146,7 +186,9 @@ int compound_compound(const PosedShape& a, const PosedShape& b, PairCache&, SubC
                     });
     }
   }
-  return merge_seams(out, size, n);
+  n = merge_seams(out, size, n);
+  remember_direction(cache, out, n);
+  return n;
 }
 
 }  // namespace grainlab::routines

@@ -11,6 +11,9 @@
 //  - A sphere pressed into the flat underside of the U, across the seams
 //    where its pieces meet, feels the hull's force there (exact on that
 //    face): one contact, not one per piece (routines_compound.cpp).
+//  - Two dented grains touching in random poses give the same contacts
+//    whatever direction the pair routine tests separating planes along
+//    (that pruning may only skip pieces that are apart).
 //  - A convex grain given as one piece collides as its hull does: the same
 //    force on a sphere pressed onto it (the compound path collides pieces
 //    cold, so the same geometry, not the same bits).
@@ -20,6 +23,9 @@
 #include "geometry/convex_decomposition.h"
 #include "geometry/mass_properties.h"
 #include "geometry/primitives.h"
+#include "collision/dispatch.h"
+#include "core/rng.h"
+#include "grains/generator.h"
 
 #include <gtest/gtest.h>
 
@@ -209,4 +215,48 @@ TEST(ConcaveContact, ASpherePressedAcrossTheSeamsOfAFlatFaceFeelsTheHullsForce) 
     ASSERT_GT(f[0], 0);
     EXPECT_NEAR(f[1], f[0], 1e-3 * f[0]) << "x = " << x / mm << " mm";
   }
+}
+
+TEST(ConcaveContact, PieceContactsDoNotDependOnThePairsTestDirection) {
+  GeneratorSpec g = preset_spec(GrainPreset::SubAngular);
+  g.faces = 200;
+  g.convexity = 0.85;
+  Rng r0(100), r1(101);
+  const TriMesh ma = generate_grain(g, r0), mb = generate_grain(g, r1);
+  World w;
+  w.model.gravity = Vec3::Zero();
+  const Index a = w.add_body(w.model.add_concave_shape(ma, decompose_convex(ma), "a"), 0, 1.0, Vec3::Zero());
+  const Index b = w.add_body(w.model.add_concave_shape(mb, decompose_convex(mb), "b"), 0, 1.0, Vec3::Zero());
+  Rng rng(7);
+  SubContact out[kMaxSubContacts], ref[kMaxSubContacts];
+  int touching = 0;
+  for (int pose = 0; pose < 60; ++pose) {
+    w.state.bodies[a].q = rng.rotation();
+    w.state.bodies[b].q = rng.rotation();
+    const Vec3 u = rng.unit_vector();
+    w.step(1e-30);  // pose the rotations
+    double lo = 0, hi = 3;  // bisect the distance along u at which they touch, then press 0.005
+    for (int it = 0; it < 50; ++it) {
+      const double mid = 0.5 * (lo + hi);
+      w.state.bodies[b].x = mid * u;
+      PairCache cold;
+      (collide_shapes(w.posed_body(a), w.posed_body(b), cold, out) > 0 ? lo : hi) = mid;
+    }
+    w.state.bodies[b].x = (lo - 0.005) * u;
+    PairCache cold;
+    const int n_ref = collide_shapes(w.posed_body(a), w.posed_body(b), cold, ref);
+    touching += n_ref > 0;
+    for (int t = 0; t < 5; ++t) {
+      PairCache c;
+      c.warm = true;
+      c.dir = rng.unit_vector();
+      const int n = collide_shapes(w.posed_body(a), w.posed_body(b), c, out);
+      ASSERT_EQ(n, n_ref) << "pose " << pose;
+      for (int k = 0; k < n; ++k) {
+        EXPECT_EQ(out[k].sub, ref[k].sub);
+        EXPECT_EQ(out[k].geo.depth, ref[k].geo.depth);
+      }
+    }
+  }
+  EXPECT_EQ(touching, 60);
 }
