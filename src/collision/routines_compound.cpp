@@ -12,11 +12,10 @@
 // a cut also meets the edge where the cut ends that face, with a smaller
 // depth and a normal tilted towards the cut (measured on a U grain's flat
 // underside: 1.5 times the force within the contact radius of the cut).
-// So two contacts of one pair whose normals lie within kSeamAngle and whose
-// points lie closer than kSeamReach of the smaller piece's bounding radius
-// are one contact across a seam: the deeper is kept. Contacts of a dent or a
-// hook face different ways (the trough's floor and wall: 90 degrees) and are
-// all kept.
+// So contacts of one pair whose normals and points are close are one contact
+// across a seam and share its force (weigh_seams below). Contacts of a dent
+// or a hook face different ways (the trough's floor and wall: 90 degrees)
+// and keep all of theirs.
 // A piece pair is also skipped when a plane perpendicular to the pair's
 // direction n separates the two pieces: the largest n.x over piece i of A is
 // below the smallest over piece j of B (exact for any n; n is the pair's
@@ -119,25 +118,48 @@ void collide_piece(const PosedShape& a, const PosedShape& b, std::int32_t sub, d
     }
 }
 
-constexpr double kSeamCos = 0.866;  // cos(kSeamAngle), kSeamAngle = 30 degrees
+constexpr double kSeamCos = 0.940;   // cos(kSeamAngle), kSeamAngle = 20 degrees
+constexpr double kSeamCos2 = 0.766;  // cos(2 kSeamAngle)
 constexpr double kSeamReach = 0.25;
 
-// Keeps the deepest of each group of contacts across a seam (above); the
-// survivors stay in increasing sub-contact id. Returns their number.
-int merge_seams(SubContact* out, const double* size, int n) {
-  bool dropped[kMaxSubContacts] = {};
+double smoothstep(double t) {
+  t = std::clamp(t, 0.0, 1.0);
+  return t * t * (3 - 2 * t);
+}
+
+// Shares the elastic force of contacts across a seam (above): contact i
+// keeps the weight w_i = d_i^4 / (d_i^4 + sum_j s_ij d_j^4) of its force
+// (its gain and twist), where s_ij in [0, 1] says how much i and j are one
+// contact: 1 for normals within kSeamAngle and points within kSeamReach / 2
+// of the smaller piece's size, 0 beyond twice the angle or beyond the reach,
+// smooth in between. So two equal contacts at a seam give one contact's
+// force, a shallow corner contact next to a deep face contact fades out
+// (the total within 7 % of the deep one's alone for a Hertz force), a
+// contact that faces another way keeps all of its force, and every weight
+// is continuous in the poses: a hard choice of the deepest flips from step
+// to step and kept a consolidating specimen from coming to rest.
+void weigh_seams(SubContact* out, const double* size, int n) {
+  double d4[kMaxSubContacts], sum[kMaxSubContacts];
+  for (int i = 0; i < n; ++i) {
+    const double d2 = out[i].geo.depth * out[i].geo.depth;
+    d4[i] = d2 * d2;
+    sum[i] = d4[i];
+  }
   for (int i = 0; i < n; ++i)
     for (int j = i + 1; j < n; ++j) {
-      if (dropped[i] || dropped[j]) continue;
       const ContactResult &p = out[i].geo, &q = out[j].geo;
+      const double angle = smoothstep((p.normal.dot(q.normal) - kSeamCos2) / (kSeamCos - kSeamCos2));
+      if (angle == 0) continue;
       const double reach = kSeamReach * std::min(size[i], size[j]);
-      if (p.normal.dot(q.normal) > kSeamCos && (p.point - q.point).squaredNorm() < reach * reach)
-        dropped[p.depth >= q.depth ? j : i] = true;
+      const double s = angle * (1 - smoothstep(2 * (p.point - q.point).norm() / reach - 1));
+      sum[i] += s * d4[j];
+      sum[j] += s * d4[i];
     }
-  int m = 0;
-  for (int k = 0; k < n; ++k)
-    if (!dropped[k]) out[m++] = out[k];
-  return m;
+  for (int i = 0; i < n; ++i) {
+    const double w = sum[i] > 0 ? d4[i] / sum[i] : 1;
+    out[i].geo.gain *= w;
+    out[i].geo.twist *= w;
+  }
 }
 
 }  // namespace
@@ -156,7 +178,7 @@ int any_compound(const PosedShape& a, const PosedShape& b, PairCache& cache, Sub
     collide_piece(a, bj, static_cast<std::int32_t>(j), piece_bound(b, pieces[j]), out, size, n,
                   [&](const ContactResult& r) { return owns(b, pieces[j], r.point, r.depth); });
   }
-  n = merge_seams(out, size, n);
+  weigh_seams(out, size, n);
   remember_direction(cache, out, n);
   return n;
 }
@@ -186,7 +208,7 @@ int compound_compound(const PosedShape& a, const PosedShape& b, PairCache& cache
                     });
     }
   }
-  n = merge_seams(out, size, n);
+  weigh_seams(out, size, n);
   remember_direction(cache, out, n);
   return n;
 }

@@ -10,7 +10,8 @@
 //    overlap by a square millimetre and fly apart.
 //  - A sphere pressed into the flat underside of the U, across the seams
 //    where its pieces meet, feels the hull's force there (exact on that
-//    face): one contact, not one per piece (routines_compound.cpp).
+//    face) within 10 %: one contact's force, not one per piece
+//    (routines_compound.cpp).
 //  - Two dented grains touching in random poses give the same contacts
 //    whatever direction the pair routine tests separating planes along
 //    (that pruning may only skip pieces that are apart).
@@ -200,7 +201,7 @@ TEST(ConcaveContact, ASpherePressedAcrossTheSeamsOfAFlatFaceFeelsTheHullsForce) 
     ball[k] = w[k].add_body(w[k].model.add_sphere_shape(0.5 * mm), mat, 1.0, Vec3::Zero());
   }
   // Every 0.02 mm along the underside's 6 mm (the seams lie where cuts meet
-  // y = 0; before seams were merged, 55 of 581 positions felt up to twice the force).
+  // y = 0; without weigh_seams, 55 of 581 positions felt up to twice the force).
   for (double x = -2.9 * mm; x <= 2.9 * mm; x += 0.02 * mm) {
     double f[2];
     for (int k = 0; k < 2; ++k) {
@@ -213,7 +214,10 @@ TEST(ConcaveContact, ASpherePressedAcrossTheSeamsOfAFlatFaceFeelsTheHullsForce) 
       f[k] = sum.norm();
     }
     ASSERT_GT(f[0], 0);
-    EXPECT_NEAR(f[1], f[0], 1e-3 * f[0]) << "x = " << x / mm << " mm";
+    // Shared smoothly (weigh_seams): at most 10 % under where a corner of the
+    // next piece fades out (measured: 0.915 at worst), never over.
+    EXPECT_LE(f[1], f[0] * (1 + 1e-6)) << "x = " << x / mm << " mm";
+    EXPECT_GE(f[1], 0.9 * f[0]) << "x = " << x / mm << " mm";
   }
 }
 
