@@ -142,20 +142,20 @@ int run_stats(const StatsOptions& o) {
       const TriMesh mesh = load_mesh(file);
       const ShapeMetrics s = shape_metrics(mesh);
       // What a run would collide (grains.representation): the hull, or convex pieces.
-      ConvexDecomposition dec;
-      dec.pieces.resize(1);
-      dec.volume = s.volume;
-      dec.pieces_volume = s.volume / s.convexity;
+      std::size_t pieces = 1;
+      double excess = 1 / s.convexity - 1;  // the hull's
       if (collides_as_pieces(o.representation, s.convexity)) {
         DecompositionOptions d;
         d.max_pieces = kMaxCompoundPieces;
-        dec = decompose_convex(mesh, d);
+        const ConvexDecomposition dec = decompose_convex(mesh, d);
+        pieces = dec.pieces.size();
+        excess = dec.excess();
       }
-      as_pieces += dec.pieces.size() > 1;
+      as_pieces += pieces > 1;
       fmt::print("{},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{},{},{:.4f}\n",
                  file.string(), s.volume, s.surface_area, s.equivalent_diameter, s.long_axis,
                  s.intermediate_axis, s.short_axis, s.elongation, s.flatness, s.sphericity, s.convexity,
-                 s.roundness, dec.pieces.size() > 1 ? "pieces" : "hull", dec.pieces.size(), dec.excess());
+                 s.roundness, pieces > 1 ? "pieces" : "hull", pieces, excess);
       metrics.push_back(s);
     }
     std::fflush(stdout);

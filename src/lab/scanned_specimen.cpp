@@ -32,6 +32,12 @@ Specimen place_scanned_specimen(World& w, const DirectShearSpec& spec, Index gra
   const Vec3 centre = 0.5 * (lo + hi);
   const Index first = static_cast<Index>(w.model.bodies.size());
 
+  for (int k = 0; k < n; ++k) w.add_body(shapes[k], grain_material, 1.0, Vec3::Zero(), Quat(mp[k].principal_axes));
+  // The probe steps below find contacts; they must leave no trace in the step count or the clock.
+  const auto step0 = w.state.step;
+  const double time0 = w.state.time;
+  const Vec3 gravity = w.model.gravity;
+  w.model.gravity = Vec3::Zero();
   double spread = 0;
   for (double f : kScanSpreads) {
     const Vec3 extent = f * (hi - lo);
@@ -43,20 +49,13 @@ Specimen place_scanned_specimen(World& w, const DirectShearSpec& spec, Index gra
     // Centred on x = y = 0, the lowest point 1 % of a diameter above the floor (z = 0).
     const Vec3 shift(0, 0, 0.5 * extent.z() + 0.01 * sp.mean_diameter);
     for (int k = 0; k < n; ++k) {
-      const Vec3 x = shift + f * (mp[k].centroid - centre);
-      const Quat q(mp[k].principal_axes);
-      if (spread == 0 && f == kScanSpreads[0])
-        w.add_body(shapes[k], grain_material, 1.0, x, q);
       BodyState& b = w.state.bodies[first + k];
-      b.x = x;
-      b.q = q;
+      b.x = shift + f * (mp[k].centroid - centre);
+      b.q = Quat(mp[k].principal_axes);
       b.v = b.w = Vec3::Zero();
     }
     // The deepest overlap at these positions (a step of no duration finds the contacts).
-    const Vec3 gravity = w.model.gravity;
-    w.model.gravity = Vec3::Zero();
     w.step(1e-30);
-    w.model.gravity = gravity;
     double deepest = 0;
     for (const Contact& c : w.state.contacts) deepest = std::max(deepest, c.geo.depth);
     sp.fill_top = f * (hi.z() - lo.z()) + 0.01 * sp.mean_diameter;
@@ -70,6 +69,9 @@ Specimen place_scanned_specimen(World& w, const DirectShearSpec& spec, Index gra
                   "with `grainlab grains stats` and ParaView",
                   spec.grains.scan, deepest * 1e6, kScanOverlap, f);
   }
+  w.model.gravity = gravity;
+  w.state.step = step0;
+  w.state.time = time0;
   for (int k = 0; k < n; ++k) {
     w.state.bodies[first + k].v = w.state.bodies[first + k].w = Vec3::Zero();
     sp.mean_mass += w.model.bodies[first + k].gravity_mass / n;
