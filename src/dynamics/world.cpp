@@ -196,6 +196,12 @@ void World::step(double dt) {
   ++profile.steps;
 }
 
+int World::sub_contact_slots() const {
+  const bool compounds = std::any_of(model.shapes.begin(), model.shapes.end(),
+                                     [](const Shape& s) { return s.kind == ShapeKind::Compound; });
+  return compounds ? kMaxSubContacts : 1;  // only compound routines write more than one
+}
+
 bool World::spheres_only() const {
   return std::all_of(model.shapes.begin(), model.shapes.end(),
                      [](const Shape& s) { return s.kind == ShapeKind::Sphere; });
@@ -309,14 +315,17 @@ void World::collide_list(std::vector<CandidatePair>& pairs, bool walls, std::vec
   // Each pair collides into a buffer on the stack and copies its touching
   // results, in increasing sub-contact id, into its own fixed-capacity slot,
   // in parallel. Most pairs do not touch and write nothing but their count.
-  if (sub_results_.size() < n * kMaxSubContacts) sub_results_.resize(n * kMaxSubContacts);
+  // Slots per pair: one unless a compound shape can touch in several places,
+  // so a world of convex grains writes its results densely.
+  const std::size_t slots = static_cast<std::size_t>(sub_contact_slots());
+  if (sub_results_.size() < n * slots) sub_results_.resize(n * slots);
   sub_counts_.resize(n + 1);
   parallel_for(
       static_cast<std::ptrdiff_t>(n),
       [&](std::ptrdiff_t k) {
         thread_local SubContact local[kMaxSubContacts];  // constructed once per thread, not per pair
         const int written = walls ? collide_wall(pairs[k], local) : collide_pair(pairs[k], local);
-        SubContact* out = &sub_results_[static_cast<std::size_t>(k) * kMaxSubContacts];
+        SubContact* out = &sub_results_[static_cast<std::size_t>(k) * slots];
         int touching = 0;
         for (int r = 0; r < written; ++r)
           if (local[r].geo.touching) out[touching++] = local[r];
@@ -345,7 +354,7 @@ void World::collide_list(std::vector<CandidatePair>& pairs, bool walls, std::vec
         const std::int32_t hint = pair.first_contact;
         pair.first_contact = begin == end ? CandidatePair::kNoContacts : static_cast<std::int32_t>(begin);
         if (begin == end) return;
-        const SubContact* res = &sub_results_[static_cast<std::size_t>(k) * kMaxSubContacts];
+        const SubContact* res = &sub_results_[static_cast<std::size_t>(k) * slots];
         std::size_t old = hint == CandidatePair::kNoContacts ? contacts.size()
                                                              : first_contact_of(contacts, pair.a, pair.b, hint);
         for (std::size_t i = begin; i < end; ++i) {

@@ -113,13 +113,14 @@ class World {
   bool prepared_ = false;
   double checked_dt_ = -1;  // the step last checked against the critical step
   bool spheres_only() const;  // every grain shape is a sphere: pair loops are cheap
+  int sub_contact_slots() const;  // most sub-contacts one pair of this model's shapes may write
   bool rebuild_due_ = true;  // compute_bounds found the candidate pairs due for a rebuild
   std::vector<Mat3> rot_;
   std::vector<Mat3> wall_rot_;  // wall rotations, as of the last broadphase
   std::vector<Aabb> aabb_;
   std::vector<BodyPair> candidates_;
   std::vector<CandidatePair> scratch_;
-  std::vector<SubContact> sub_results_;  // narrowphase: kMaxSubContacts slots per pair
+  std::vector<SubContact> sub_results_;  // narrowphase: sub_contact_slots() per pair
   std::vector<int> sub_counts_;          // narrowphase: touching results per pair, then offsets
   std::vector<Contact> next_contacts_;   // the contact list being compacted
   std::vector<Vec3> force_, torque_;
