@@ -7,6 +7,7 @@
 #include "dynamics/world.h"
 
 #include "collision/dispatch.h"
+#include "collision/narrowphase.h"
 #include "collision/wall_bound.h"
 #include "core/error.h"
 #include "core/parallel.h"
@@ -306,6 +307,25 @@ int World::collide_pair(CandidatePair& pc, SubContact* out) const {
   return collide_shapes(posed_body(pc.a), posed_body(pc.b), pc.cache, out);
 }
 
+int World::collide_spheres(CandidatePair& pc, SubContact* out) const {
+  // collide_pair for two spheres, without building posed shapes or going
+  // through the shape-pair table: what routines::sphere_sphere computes,
+  // written only if touching.
+  const BodyModel& ma = model.bodies[pc.a];
+  const BodyModel& mb = model.bodies[pc.b];
+  const Vec3& xa = state.bodies[pc.a].x;
+  const Vec3& xb = state.bodies[pc.b].x;
+  const double reach = ma.bounding_radius + mb.bounding_radius;
+  if ((xb - xa).squaredNorm() > reach * reach) {
+    pc.cache.warm = false;  // as collide_pair
+    return 0;
+  }
+  const ContactResult r = collide(SphereShape{xa, ma.radius}, SphereShape{xb, mb.radius});
+  if (!r.touching) return 0;
+  out[0] = {r, 0};
+  return 1;
+}
+
 int World::collide_wall(CandidatePair& pc, SubContact* out) const {
   return collide_shapes(posed_wall(pc.a), posed_body(pc.b), pc.cache, out);
 }
@@ -320,18 +340,23 @@ void World::collide_list(std::vector<CandidatePair>& pairs, bool walls, std::vec
   const std::size_t slots = static_cast<std::size_t>(sub_contact_slots());
   if (sub_results_.size() < n * slots) sub_results_.resize(n * slots);
   sub_counts_.resize(n + 1);
+  const bool spheres = spheres_only();
   parallel_for(
       static_cast<std::ptrdiff_t>(n),
       [&](std::ptrdiff_t k) {
+        SubContact* out = &sub_results_[static_cast<std::size_t>(k) * slots];
+        if (spheres && !walls) {
+          sub_counts_[k] = collide_spheres(pairs[k], out);
+          return;
+        }
         thread_local SubContact local[kMaxSubContacts];  // constructed once per thread, not per pair
         const int written = walls ? collide_wall(pairs[k], local) : collide_pair(pairs[k], local);
-        SubContact* out = &sub_results_[static_cast<std::size_t>(k) * slots];
         int touching = 0;
         for (int r = 0; r < written; ++r)
           if (local[r].geo.touching) out[touching++] = local[r];
         sub_counts_[k] = touching;
       },
-      32, settings.threads, spheres_only() ? settings.serial_below : 0);
+      32, settings.threads, spheres ? settings.serial_below : 0);
   // Each pair's place in the new list: an exclusive prefix sum, so the list is
   // sorted by (a, b, sub) as the pairs are by (a, b), whatever the threads.
   std::size_t total = 0;
@@ -358,17 +383,20 @@ void World::collide_list(std::vector<CandidatePair>& pairs, bool walls, std::vec
         std::size_t old = hint == CandidatePair::kNoContacts ? contacts.size()
                                                              : first_contact_of(contacts, pair.a, pair.b, hint);
         for (std::size_t i = begin; i < end; ++i) {
-          Contact c;
+          Contact& c = next_contacts_[i];  // written in place: every field is set
           c.a = pair.a;
           c.b = pair.b;
           c.sub = res[i - begin].sub;
           c.geo = res[i - begin].geo;
           while (old < contacts.size() && contacts[old] < c) ++old;
-          if (old < contacts.size() && contacts[old].same_key(c)) c.xi = contacts[old].xi;
-          next_contacts_[i] = c;
+          const bool carried = old < contacts.size() && contacts[old].same_key(c);
+          c.xi = carried ? contacts[old].xi : Vec3::Zero();
+          c.force.setZero();  // forces() sets these three
+          c.torque.setZero();
+          c.normal_force = 0;
         }
       },
-      64, settings.threads, spheres_only() ? settings.serial_below : 0);
+      64, settings.threads, spheres ? settings.serial_below : 0);
   contacts.swap(next_contacts_);
 }
 

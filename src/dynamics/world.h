@@ -102,6 +102,7 @@ class World {
   void bookkeeping();
   void mix_pair_table();
   int collide_pair(CandidatePair& pc, SubContact* out) const;
+  int collide_spheres(CandidatePair& pc, SubContact* out) const;  // collide_pair of two spheres, touching only
   int collide_wall(CandidatePair& pc, SubContact* out) const;
   void collide_list(std::vector<CandidatePair>& pairs, bool walls, std::vector<Contact>& contacts);
   PosedShape posed_wall(Index w) const;
