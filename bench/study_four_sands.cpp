@@ -5,7 +5,7 @@
 // writes run folders and one comparison report (scripts/study_report.py).
 //
 //   build/study_four_sands [--quick] [--out DIR] [--grainlab PATH] [--threads N]
-//                          [--only sands|damping] [--estimate]
+//                          [--only sands|damping|SAND,SAND...] [--estimate]
 //
 // Per sand (Table 1 material through lab/sand_presets.h), one `grainlab run`
 // on the config written to DIR/configs/<sand>.toml, which does the whole
@@ -32,6 +32,14 @@
 // the report), not the densities: it targets the lab's indices and skips the
 // own index measurement (see base_spec). --only damping still runs
 // the glass beads' run first (their indices and friction).
+//
+// Running it again on the same DIR continues it: a run whose run.json is
+// written is done and kept, a run with a checkpoint resumes from it
+// (`grainlab run --resume`), and the own index void ratios are measured once
+// per run folder. Each sitting is timed into DIR/<run>/study_sittings.json;
+// a sitting that was killed counts up to the newest file it left in the run
+// folder (its last checkpoint), so run_wall_s is the wall time of the work
+// the run kept, however many sittings it took.
 #include "core/wait_policy.h"
 #include "core/error.h"
 #include "core/parallel.h"
@@ -45,6 +53,8 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -122,19 +132,59 @@ DirectShearSpec base_spec(const Options& o, const Sand& s) {
   return spec;
 }
 
-// Runs `grainlab run` on spec (written to DIR/configs/name.toml) into DIR/name.
+template <typename TimePoint>
+double seconds_since_epoch(TimePoint t) {
+  return std::chrono::duration<double>(t.time_since_epoch()).count();
+}
+
+// Wall time of the earlier sittings of the run in folder: each has a start;
+// one without an end was killed and counts up to the newest file it left.
+double earlier_sittings(const fs::path& folder, nlohmann::json& sittings) {
+  double newest = 0;
+  for (const auto& e : fs::directory_iterator(folder))
+    if (e.is_regular_file())
+      newest = std::max(newest, seconds_since_epoch(std::chrono::file_clock::to_sys(e.last_write_time())));
+  double total = 0;
+  for (auto& s : sittings) {
+    if (!s.contains("end")) s["end"] = std::max(s["start"].get<double>(), newest);
+    total += s["end"].get<double>() - s["start"].get<double>();
+  }
+  return total;
+}
+
+// Runs `grainlab run` on spec (written to DIR/configs/name.toml) into DIR/name,
+// or resumes it from its checkpoint; a run whose run.json is written is done.
 bool shear_run(const Options& o, DirectShearSpec spec, const std::string& name, nlohmann::json& record) {
-  spec.output.folder = (fs::path(o.out) / name).string();
+  const fs::path folder = fs::path(o.out) / name;
+  spec.output.folder = folder.string();
   const fs::path config = fs::path(o.out) / "configs" / (name + ".toml");
   fs::create_directories(config.parent_path());
   std::ofstream(config) << to_toml(spec);
-  const std::string cmd = fmt::format("'{}' run '{}' --quiet --no-report", o.grainlab, config.string());
+  const fs::path sittings_file = folder / "study_sittings.json";
+  nlohmann::json sittings = fs::exists(sittings_file) ? read_json_file(sittings_file) : nlohmann::json::array();
+  record["run_folder"] = name;
+  const double before = fs::exists(folder) ? earlier_sittings(folder, sittings) : 0.0;
+  if (fs::exists(folder / "run.json")) {
+    fmt::print("  done earlier ({} sittings, {:.0f} s): {}\n", sittings.size(), before, (folder / "run.json").string());
+    record["run_wall_s"] = before;
+    record["sittings"] = sittings.size();
+    record["run_exit_status"] = 0;
+    return true;
+  }
+  const bool resume = fs::exists(folder / "checkpoint.bin");
+  const std::string cmd = fmt::format("'{}' run '{}' --quiet --no-report{}", o.grainlab, config.string(),
+                                      resume ? " --resume" : "");
   fmt::print("  {}\n", cmd);
   std::fflush(stdout);
+  fs::create_directories(folder);
+  sittings.push_back({{"start", seconds_since_epoch(std::chrono::system_clock::now())}});
+  write_json_file(sittings_file, sittings);
   Stopwatch clock;
   const int rc = std::system(cmd.c_str());
-  record["run_folder"] = name;
-  record["run_wall_s"] = clock.seconds();
+  sittings.back()["end"] = sittings.back()["start"].get<double>() + clock.seconds();
+  write_json_file(sittings_file, sittings);
+  record["run_wall_s"] = before + clock.seconds();
+  record["sittings"] = sittings.size();
   record["run_exit_status"] = rc;
   return rc == 0;
 }
@@ -195,6 +245,16 @@ void estimate(const Options& o) {
   fmt::print("total: about {:.1f} h\n", total / 3600);
 }
 
+// Whether --only asks for this run: "sands" is the four sands, "damping" the
+// damping set (and the glass beads it starts from), or a comma list of names.
+bool selected(const Options& o, const std::string& what) {
+  if (o.only.empty()) return true;
+  if (o.only == "sands") return what != "damping";
+  if (o.only == "damping") return what == "damping" || what == "glass-beads";
+  const std::string list = "," + o.only + ",";
+  return list.find("," + what + ",") != std::string::npos;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -211,8 +271,22 @@ int main(int argc, char** argv) {
     else if (a == "--only" && has_value) o.only = argv[++i];
     else {
       fmt::print(stderr, "usage: study_four_sands [--quick] [--out DIR] [--grainlab PATH] [--threads N] "
-                         "[--only sands|damping] [--estimate]\n");
+                         "[--only sands|damping|SAND,SAND...] [--estimate]\n"
+                         "  SAND: glass-beads, rounded, sub-angular, angular, damping\n");
       return 2;
+    }
+  }
+  if (!o.only.empty() && o.only != "sands" && o.only != "damping") {
+    std::string rest = o.only + ",";
+    for (std::size_t at; (at = rest.find(',')) != std::string::npos; rest.erase(0, at + 1)) {
+      const std::string name = rest.substr(0, at);
+      const bool known = name == "damping" || std::any_of(kSands.begin(), kSands.end(),
+                                                          [&](const Sand& s) { return name == s.name; });
+      if (!known) {
+        fmt::print(stderr, "study_four_sands: --only '{}': no run named '{}'; the names are glass-beads, "
+                           "rounded, sub-angular, angular and damping, or use sands / damping\n", o.only, name);
+        return 2;
+      }
     }
   }
   if (o.grainlab.empty()) o.grainlab = (fs::absolute(argv[0]).parent_path() / "grainlab").string();
@@ -231,7 +305,8 @@ int main(int argc, char** argv) {
     bool have_beads = false;
     for (const Sand& s : kSands) {
       DirectShearSpec spec = base_spec(o, s);
-      if (o.only == "damping" && std::string(s.name) != "glass-beads") continue;
+      // A run done in an earlier sitting is tabulated whether selected or not.
+      if (!selected(o, s.name) && !fs::exists(fs::path(o.out) / s.name / "run.json")) continue;
       nlohmann::json j = {{"name", s.name}, {"sand_preset", s.preset}, {"grain_class", spec.grains.preset}};
       fmt::print("{}: {} grains of {} faces, box {:.2f} x {:.2f} x {:.2f} mm\n", s.name, spec.grains.preset,
                  spec.grains.faces, spec.box.length * 1e3, spec.box.width * 1e3, spec.box.height * 1e3);
@@ -244,7 +319,9 @@ int main(int argc, char** argv) {
       study["sands"].push_back(j);
       save(o, study);
     }
-    if (o.only != "sands" && have_beads) {
+    if (selected(o, "damping") && !have_beads)
+      fmt::print("damping set skipped: it needs the glass beads' finished run (their indices and friction)\n");
+    if (selected(o, "damping") && have_beads) {
       for (const auto& [gn, gt] : {std::pair{20.0, 10.0}, std::pair{40.0, 20.0}, std::pair{80.0, 40.0}}) {
         DirectShearSpec spec = beads;
         spec.material.law = contact_law<HertzUserLaw>();
@@ -258,7 +335,7 @@ int main(int argc, char** argv) {
         save(o, study);
       }
     }
-    study["wall_s"] = all.seconds();
+    study["sitting_wall_s"] = all.seconds();  // this sitting; each run's own is its run_wall_s
     save(o, study);
     fmt::print("study done in {:.0f} s: {}/study.json; report: /usr/bin/python3 scripts/study_report.py {}\n",
                all.seconds(), o.out, o.out);
