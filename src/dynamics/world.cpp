@@ -18,6 +18,7 @@
 #include "dynamics/time_step.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <limits>
 
@@ -332,11 +333,12 @@ int World::collide_wall(CandidatePair& pc, SubContact* out) const {
 
 void World::collide_list(std::vector<CandidatePair>& pairs, bool walls, std::vector<Contact>& contacts) {
   const std::size_t n = pairs.size();
-  // Each pair collides into a buffer on the stack and copies its touching
+  // Each pair collides into a per-thread buffer and copies its touching
   // results, in increasing sub-contact id, into its own fixed-capacity slot,
-  // in parallel. Most pairs do not touch and write nothing but their count.
-  // Slots per pair: one unless a compound shape can touch in several places,
-  // so a world of convex grains writes its results densely.
+  // in parallel (a pair of spheres writes its slot directly). Most pairs do
+  // not touch and write nothing but their count. Slots per pair: one unless
+  // a compound shape can touch in several places (only the compound routines
+  // write more than one result), so a world of convex grains writes densely.
   const std::size_t slots = static_cast<std::size_t>(sub_contact_slots());
   if (sub_results_.size() < n * slots) sub_results_.resize(n * slots);
   sub_counts_.resize(n + 1);
@@ -352,8 +354,11 @@ void World::collide_list(std::vector<CandidatePair>& pairs, bool walls, std::vec
         thread_local SubContact local[kMaxSubContacts];  // constructed once per thread, not per pair
         const int written = walls ? collide_wall(pairs[k], local) : collide_pair(pairs[k], local);
         int touching = 0;
-        for (int r = 0; r < written; ++r)
-          if (local[r].geo.touching) out[touching++] = local[r];
+        for (int r = 0; r < written; ++r) {
+          if (!local[r].geo.touching) continue;
+          assert(touching < static_cast<int>(slots));
+          out[touching++] = local[r];
+        }
         sub_counts_[k] = touching;
       },
       32, settings.threads, spheres ? settings.serial_below : 0);
