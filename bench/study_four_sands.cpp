@@ -36,10 +36,11 @@
 // Running it again on the same DIR continues it: a run whose run.json is
 // written is done and kept, a run with a checkpoint resumes from it
 // (`grainlab run --resume`), and the own index void ratios are measured once
-// per run folder. Each sitting is timed into DIR/<run>/study_sittings.json;
-// a sitting that was killed counts up to the newest file it left in the run
-// folder (its last checkpoint), so run_wall_s is the wall time of the work
-// the run kept, however many sittings it took.
+// per run folder. Each sitting is timed into DIR/<run>/study_sittings.json,
+// with, while it runs, when the run last saved progress a later sitting
+// reuses (its checkpoint or its index densities); a sitting that was killed counts up to
+// that, so run_wall_s is the wall time of the work the run kept, however many
+// sittings it took (commit an unfinished run's checkpoint with its folder).
 #include "core/wait_policy.h"
 #include "core/error.h"
 #include "core/parallel.h"
@@ -56,10 +57,14 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <csignal>
+#include <condition_variable>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <mutex>
 #include <string>
+#include <thread>
 #include <vector>
 
 using namespace grainlab;
@@ -132,22 +137,37 @@ DirectShearSpec base_spec(const Options& o, const Sand& s) {
   return spec;
 }
 
+// SIGINT/SIGTERM: the running grainlab saves its checkpoint and stops; the
+// study then records the sitting and stops too.
+volatile std::sig_atomic_t g_stop = 0;
+void on_stop(int) { g_stop = 1; }
+
 template <typename TimePoint>
 double seconds_since_epoch(TimePoint t) {
   return std::chrono::duration<double>(t.time_since_epoch()).count();
 }
 
-// Wall time of the earlier sittings of the run in folder: each has a start;
-// one without an end was killed and counts up to the newest file it left.
-double earlier_sittings(const fs::path& folder, nlohmann::json& sittings) {
+// When the run in folder last saved progress that a later sitting reuses:
+// its checkpoint or its own index densities (0 if neither).
+double last_saved(const fs::path& folder) {
   double newest = 0;
-  for (const auto& e : fs::directory_iterator(folder))
-    if (e.is_regular_file())
-      newest = std::max(newest, seconds_since_epoch(std::chrono::file_clock::to_sys(e.last_write_time())));
+  for (const char* kept : {"checkpoint.bin", "index_densities.json"}) {
+    std::error_code ec;
+    const auto t = fs::last_write_time(folder / kept, ec);
+    if (!ec) newest = std::max(newest, seconds_since_epoch(std::chrono::file_clock::to_sys(t)));
+  }
+  return newest;
+}
+
+// Wall time of the run's earlier sittings. One without an end was killed and
+// counts up to the last progress it saved (`saved_until`, noted while it ran,
+// not the files' times: a fresh checkout gives every file a new time).
+double earlier_sittings(const nlohmann::json& sittings) {
   double total = 0;
-  for (auto& s : sittings) {
-    if (!s.contains("end")) s["end"] = std::max(s["start"].get<double>(), newest);
-    total += s["end"].get<double>() - s["start"].get<double>();
+  for (const auto& s : sittings) {
+    const double start = s.at("start").get<double>();
+    const double end = s.contains("end") ? s["end"].get<double>() : s.value("saved_until", start);
+    total += std::max(0.0, end - start);
   }
   return total;
 }
@@ -163,7 +183,7 @@ bool shear_run(const Options& o, DirectShearSpec spec, const std::string& name, 
   const fs::path sittings_file = folder / "study_sittings.json";
   nlohmann::json sittings = fs::exists(sittings_file) ? read_json_file(sittings_file) : nlohmann::json::array();
   record["run_folder"] = name;
-  const double before = fs::exists(folder) ? earlier_sittings(folder, sittings) : 0.0;
+  const double before = earlier_sittings(sittings);
   if (fs::exists(folder / "run.json")) {
     fmt::print("  done earlier ({} sittings, {:.0f} s): {}\n", sittings.size(), before, (folder / "run.json").string());
     record["run_wall_s"] = before;
@@ -177,15 +197,42 @@ bool shear_run(const Options& o, DirectShearSpec spec, const std::string& name, 
   fmt::print("  {}\n", cmd);
   std::fflush(stdout);
   fs::create_directories(folder);
-  sittings.push_back({{"start", seconds_since_epoch(std::chrono::system_clock::now())}});
+  const double start = seconds_since_epoch(std::chrono::system_clock::now());
+  sittings.push_back({{"start", start}});
   write_json_file(sittings_file, sittings);
+  // While the run goes, note every 20 s when it last saved progress, so a
+  // sitting killed with the study counts only the work it kept.
+  std::mutex m;
+  std::condition_variable cv;
+  bool finished = false;
+  std::thread watcher([&] {
+    std::unique_lock lock(m);
+    while (!cv.wait_for(lock, std::chrono::seconds(20), [&] { return finished; })) {
+      const double saved = last_saved(folder);
+      if (saved > start && saved != sittings.back().value("saved_until", 0.0)) {
+        sittings.back()["saved_until"] = saved;
+        write_json_file(sittings_file, sittings);
+      }
+    }
+  });
   Stopwatch clock;
   const int rc = std::system(cmd.c_str());
-  sittings.back()["end"] = sittings.back()["start"].get<double>() + clock.seconds();
+  {
+    std::lock_guard lock(m);
+    finished = true;
+  }
+  cv.notify_one();
+  watcher.join();
+  sittings.back()["end"] = start + clock.seconds();
   write_json_file(sittings_file, sittings);
   record["run_wall_s"] = before + clock.seconds();
   record["sittings"] = sittings.size();
   record["run_exit_status"] = rc;
+  if (g_stop) {
+    fmt::print("study stopped by a signal: {} has its checkpoint; run the same command again to continue\n",
+               folder.string());
+    std::exit(130);
+  }
   return rc == 0;
 }
 
@@ -289,6 +336,8 @@ int main(int argc, char** argv) {
       }
     }
   }
+  std::signal(SIGINT, on_stop);
+  std::signal(SIGTERM, on_stop);
   if (o.grainlab.empty()) o.grainlab = (fs::absolute(argv[0]).parent_path() / "grainlab").string();
   try {
     if (o.estimate) {
