@@ -108,6 +108,11 @@ struct State {
   // that moves grains by hand (not by stepping) sets rebuild_pairs.
   std::vector<Vec3> x_at_rebuild;
   bool rebuild_pairs = true;
+  // A world of spheres keeps its wall-grain candidates while no wall has
+  // moved by half the skin (World::broadphase): the wall poses they were
+  // found at. Not checkpointed: empty means find them again.
+  std::vector<Vec3> wall_x_at_rebuild;
+  std::vector<Quat> wall_q_at_rebuild;
 };
 
 }  // namespace grainlab

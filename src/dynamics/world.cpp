@@ -149,6 +149,8 @@ void World::prepare() {
     for (const BodyModel& b : model.bodies) r_min = std::min(r_min, b.radius);
     settings.skin = std::isfinite(r_min) ? 0.2 * r_min : 1e-3;
   }
+  state.wall_x_at_rebuild.clear();  // the model may have changed: find wall candidates again
+  state.wall_q_at_rebuild.clear();
   // No forced rebuild: a restored State carries its own candidate pairs, and
   // added bodies make x_at_rebuild the wrong size, which forces one.
   checked_dt_ = -1;
@@ -249,16 +251,25 @@ void World::broadphase() {
     state.rebuild_pairs = false;
     ++profile.broadphase_rebuilds;
   }
-  // Wall-grain candidates: few walls, rebuilt every step (walls move).
+  // Wall-grain candidates: few walls, found again every step (walls move),
+  // but in a world of spheres, whose wall routines keep nothing in the
+  // PairCache, they are kept while no wall has moved by skin/2 nor turned,
+  // and found within a margin of 1.5 skins. That is exact: since they were
+  // found, a grain has moved by at most a skin (skin/2 since the grain pairs'
+  // rebuild, which finds these again, at most skin/2 before) and a wall by at
+  // most skin/2, so a grain that may touch a wall now was within the margin.
   wall_rot_.resize(state.walls.size());
   for (std::size_t w = 0; w < state.walls.size(); ++w) wall_rot_[w] = state.walls[w].q.toRotationMatrix();
+  const bool keep = spheres_only();
+  if (keep && !wall_pairs_due()) return;
+  const double margin = keep ? 1.5 * settings.skin : 0.0;
   scratch_.clear();
   for (std::size_t w = 0; w < model.walls.size(); ++w) {
     const WallBound bound = wall_bound(posed_wall(static_cast<Index>(w)));
     const Vec3& wx = state.walls[w].x;
     for (std::size_t i = 0; i < n; ++i) {
       const Vec3& x = state.bodies[i].x;
-      if (!bound.may_touch(x, model.bodies[i].bounding_radius)) continue;
+      if (!bound.may_touch(x, model.bodies[i].bounding_radius + margin)) continue;
       CandidatePair pc;
       pc.a = static_cast<Index>(w);
       pc.b = static_cast<Index>(i);
@@ -268,6 +279,23 @@ void World::broadphase() {
   }
   carry_history(state.wall_pairs, scratch_);
   state.wall_pairs.swap(scratch_);
+  state.wall_x_at_rebuild.clear();
+  state.wall_q_at_rebuild.clear();
+  if (!keep) return;
+  for (const WallState& w : state.walls) {
+    state.wall_x_at_rebuild.push_back(w.x);
+    state.wall_q_at_rebuild.push_back(w.q);
+  }
+}
+
+bool World::wall_pairs_due() const {
+  if (rebuild_due_ || state.wall_x_at_rebuild.size() != state.walls.size()) return true;
+  for (std::size_t w = 0; w < state.walls.size(); ++w) {
+    if ((state.walls[w].x - state.wall_x_at_rebuild[w]).squaredNorm() > 0.25 * settings.skin * settings.skin)
+      return true;
+    if (state.walls[w].q.coeffs() != state.wall_q_at_rebuild[w].coeffs()) return true;
+  }
+  return false;
 }
 
 PosedShape World::posed_body(Index i) const {

@@ -114,7 +114,8 @@ class World {
   bool prepared_ = false;
   double checked_dt_ = -1;  // the step last checked against the critical step
   bool spheres_only() const;  // every grain shape is a sphere: pair loops are cheap
-  int sub_contact_slots() const;  // most sub-contacts one pair of this model's shapes may write
+  int sub_contact_slots() const;
+  bool wall_pairs_due() const;  // a world of spheres: its kept wall-grain candidates are out of date  // most sub-contacts one pair of this model's shapes may write
   bool rebuild_due_ = true;  // compute_bounds found the candidate pairs due for a rebuild
   std::vector<Mat3> rot_;
   std::vector<Mat3> wall_rot_;  // wall rotations, as of the last broadphase
