@@ -223,9 +223,12 @@ bool shear_run(const Options& o, DirectShearSpec spec, const std::string& name, 
   }
   cv.notify_one();
   watcher.join();
-  sittings.back()["end"] = start + clock.seconds();
+  // Stopped by a signal, the run kept what it saved (its checkpoint, if it
+  // had reached the test; nothing of a preparation under way).
+  const double end = g_stop ? std::max(start, last_saved(folder)) : start + clock.seconds();
+  sittings.back()["end"] = end;
   write_json_file(sittings_file, sittings);
-  record["run_wall_s"] = before + clock.seconds();
+  record["run_wall_s"] = before + (end - start);
   record["sittings"] = sittings.size();
   record["run_exit_status"] = rc;
   if (g_stop) {
