@@ -232,8 +232,9 @@ bool shear_run(const Options& o, DirectShearSpec spec, const std::string& name, 
   record["sittings"] = sittings.size();
   record["run_exit_status"] = rc;
   if (g_stop) {
-    fmt::print("study stopped by a signal: {} has its checkpoint; run the same command again to continue\n",
-               folder.string());
+    fmt::print("study stopped by a signal: {}; run the same command again to continue\n",
+               fs::exists(folder / "checkpoint.bin") ? folder.string() + " has its checkpoint"
+                                                     : folder.string() + " starts again (no checkpoint yet)");
     std::exit(130);
   }
   return rc == 0;
