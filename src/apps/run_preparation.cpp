@@ -55,8 +55,15 @@ PreparedRun prepare_run(const DirectShearSpec& spec, const fs::path& out, bool r
       fmt::print("measuring the grains' own index void ratios (box {} d_max across, 1 seed; "
                  "`grainlab grains index` measures several seeds; set specimen.own_e_min/own_e_max to skip)\n",
                  options.box_diameters);
-      const IndexDensities d = measure_index_densities(spec, options, print);
+      IndexDensities done = unfinished_index_densities(cache, spec);
+      if (!done.dense.empty())
+        fmt::print("  keeping the {} preparation(s) an earlier run saved in {}\n",
+                   done.dense.size() + done.loose.size(), cache.string());
       fs::create_directories(out);
+      const IndexDensities d =
+          measure_index_densities(spec, options, print, std::move(done), [&](const IndexDensities& so_far) {
+            write_index_densities(cache, spec, so_far, false);
+          });
       write_index_densities(cache, spec, d);
       if (!d.settled())
         fmt::print("  warning: a preparation hit the step cap before it came to rest; the indices are what "

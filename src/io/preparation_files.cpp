@@ -30,6 +30,31 @@ nlohmann::json preparations(const std::vector<IndexPreparation>& list) {
   return a;
 }
 
+std::vector<IndexPreparation> preparations_from_json(const nlohmann::json& a) {
+  std::vector<IndexPreparation> list;
+  for (const nlohmann::json& j : a) {
+    IndexPreparation p;
+    p.seed = j.at("seed").get<std::uint64_t>();
+    p.friction = j.at("deposition_friction").get<double>();
+    p.void_ratio = j.at("bulk_void_ratio").get<double>();
+    p.whole_void_ratio = j.at("whole_box_void_ratio").get<double>();
+    p.settled = j.at("settled").get<bool>();
+    p.steps = j.at("steps").get<std::int64_t>();
+    p.wall_s = j.at("wall_s").get<double>();
+    list.push_back(p);
+  }
+  return list;
+}
+
+// The file's JSON when its key matches spec's and it is finished (or not); null otherwise.
+nlohmann::json matching_index_file(const std::filesystem::path& file, const DirectShearSpec& spec, bool finished) {
+  if (!std::filesystem::exists(file)) return nullptr;
+  nlohmann::json j = read_json_file(file);
+  if (!j.contains("key") || j["key"] != index_cache_key(spec)) return nullptr;
+  if (j.value("finished", true) != finished) return nullptr;
+  return j;
+}
+
 }  // namespace
 
 nlohmann::json to_json(const IndexDensities& d) {
@@ -59,14 +84,27 @@ nlohmann::json to_json(const std::vector<PreparationTrial>& trials) {
 
 std::optional<std::pair<double, double>> cached_index_densities(const std::filesystem::path& file,
                                                                 const DirectShearSpec& spec) {
-  if (!std::filesystem::exists(file)) return std::nullopt;
-  const nlohmann::json j = read_json_file(file);
-  if (!j.contains("key") || j["key"] != index_cache_key(spec)) return std::nullopt;
+  const nlohmann::json j = matching_index_file(file, spec, true);
+  if (j.is_null()) return std::nullopt;
   return std::make_pair(j["e_min"].get<double>(), j["e_max"].get<double>());
 }
 
-void write_index_densities(const std::filesystem::path& file, const DirectShearSpec& spec, const IndexDensities& d) {
+IndexDensities unfinished_index_densities(const std::filesystem::path& file, const DirectShearSpec& spec) {
+  IndexDensities d;
+  const nlohmann::json j = matching_index_file(file, spec, false);
+  if (j.is_null()) return d;
+  d.dense = preparations_from_json(j.at("dense"));
+  d.loose = preparations_from_json(j.at("loose"));
+  return d;
+}
+
+void write_index_densities(const std::filesystem::path& file, const DirectShearSpec& spec, const IndexDensities& d,
+                           bool finished) {
   nlohmann::json j = to_json(d);
+  if (!finished) {
+    for (const char* mean : {"e_min", "e_max", "e_min_spread", "e_max_spread", "settled", "grains"}) j.erase(mean);
+    j["finished"] = false;
+  }
   j["key"] = index_cache_key(spec);
   write_json_file(file, j);
 }

@@ -22,11 +22,20 @@ std::string index_cache_key(const DirectShearSpec& spec);
 nlohmann::json to_json(const IndexDensities& d);
 nlohmann::json to_json(const std::vector<PreparationTrial>& trials);
 
-// e_min, e_max from an index_densities.json whose key matches spec's; nullopt otherwise.
+// e_min, e_max from a finished index_densities.json whose key matches
+// spec's; nullopt otherwise.
 std::optional<std::pair<double, double>> cached_index_densities(const std::filesystem::path& file,
                                                                 const DirectShearSpec& spec);
 
-// Writes index_densities.json (with the key).
-void write_index_densities(const std::filesystem::path& file, const DirectShearSpec& spec, const IndexDensities& d);
+// The preparations of an unfinished index_densities.json whose key matches
+// spec's (to pass to measure_index_densities as `done`); empty lists
+// otherwise.
+IndexDensities unfinished_index_densities(const std::filesystem::path& file, const DirectShearSpec& spec);
+
+// Writes index_densities.json (with the key). finished = false writes the
+// preparations made so far, marked "finished": false and without e_min and
+// e_max, which cached_index_densities does not take.
+void write_index_densities(const std::filesystem::path& file, const DirectShearSpec& spec, const IndexDensities& d,
+                           bool finished = true);
 
 }  // namespace grainlab

@@ -63,16 +63,21 @@ IndexPreparation prepare_index_specimen(const DirectShearSpec& spec, const Index
 }
 
 IndexDensities measure_index_densities(const DirectShearSpec& spec, const IndexDensityOptions& o,
-                                       const IndexProgress& progress) {
+                                       const IndexProgress& progress, IndexDensities done,
+                                       const IndexPreparationDone& on_done) {
   if (o.seeds < 1) input_error("index densities: seeds = {}; use at least 1 (3 to see the spread)", o.seeds);
-  IndexDensities r;
+  IndexDensities r = std::move(done);
+  if (!r.loose.empty() && r.dense.size() < static_cast<std::size_t>(o.seeds)) r.loose.clear();  // out of order
+  r.dense.resize(std::min<std::size_t>(r.dense.size(), o.seeds));
+  r.loose.resize(std::min<std::size_t>(r.loose.size(), o.seeds));
   r.box_length = o.box_diameters * spec.grains.d_max;
   r.box_height = o.height_diameters * spec.grains.d_max;
   for (int dense = 1; dense >= 0; --dense) {
     auto& list = dense ? r.dense : r.loose;
-    for (int k = 0; k < o.seeds; ++k) {
+    for (int k = static_cast<int>(list.size()); k < o.seeds; ++k) {
       list.push_back(prepare_index_specimen(spec, o, dense, spec.seed + k));
       const IndexPreparation& p = list.back();
+      if (on_done) on_done(r);
       if (progress)
         progress(fmt::format("{} (friction {:g}) seed {}: bulk e = {:.4f}, whole-box e = {:.4f}, {} steps, "
                              "{:.0f} s{}",

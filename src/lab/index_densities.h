@@ -69,11 +69,19 @@ struct IndexDensities {
 
 // Progress lines ("dense seed 2: e = 0.584, 41000 steps").
 using IndexProgress = std::function<void(const std::string&)>;
+// Called after each preparation with those made so far (e_min, e_max not yet
+// set), so that a caller can keep them: a preparation of faceted grains can
+// take the better part of an hour.
+using IndexPreparationDone = std::function<void(const IndexDensities& so_far)>;
 
 // Measures e_min and e_max of the grains (spec.grains, spec.material,
-// spec.consolidation.normal_stress, spec.numerics) as above.
+// spec.consolidation.normal_stress, spec.numerics) as above. The
+// preparations already in `done` (dense, then loose, in seed order: what an
+// earlier, interrupted measurement passed to on_done) are kept, not made
+// again; the caller is responsible for their having the same inputs.
 IndexDensities measure_index_densities(const DirectShearSpec& spec, const IndexDensityOptions& options,
-                                       const IndexProgress& progress = {});
+                                       const IndexProgress& progress = {}, IndexDensities done = {},
+                                       const IndexPreparationDone& on_done = {});
 
 // One preparation of the index box: dense (friction 0, compacted) or loose.
 IndexPreparation prepare_index_specimen(const DirectShearSpec& spec, const IndexDensityOptions& options,

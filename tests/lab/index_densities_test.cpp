@@ -76,3 +76,35 @@ TEST(IndexDensities, FrictionalSpheresReachRandomLoosePacking) {
   EXPECT_GT(d.e_max, 0.67);
   EXPECT_LT(d.e_max, 0.83);
 }
+
+// A measurement interrupted after its dense preparation and started again
+// with that preparation (what `grainlab run` keeps in index_densities.json)
+// makes only the loose one and ends where the uninterrupted one did, to the
+// bit: the preparations are deterministic at a given seed.
+TEST(IndexDensities, AMeasurementGivenItsDensePreparationMakesOnlyTheLooseOne) {
+  const IndexDensities& full = sphere_indices();
+  IndexDensityOptions o = testing_support::small_index_box();
+  o.box_diameters = 8;
+  IndexDensities done;
+  done.dense = full.dense;
+  int made = 0, saved = 0;
+  const IndexDensities d = measure_index_densities(
+      testing_support::sphere_spec(), o, [&](const std::string&) { ++made; }, done,
+      [&](const IndexDensities& so_far) {
+        ++saved;
+        EXPECT_EQ(so_far.dense.size(), 1u);
+        EXPECT_EQ(so_far.loose.size(), 1u);
+      });
+  EXPECT_EQ(made, 1);
+  EXPECT_EQ(saved, 1);
+  EXPECT_EQ(d.e_min, full.e_min);
+  EXPECT_EQ(d.e_max, full.e_max);
+  EXPECT_EQ(d.loose.front().steps, full.loose.front().steps);
+  // Given both, it makes none.
+  made = 0;
+  const IndexDensities again = measure_index_densities(testing_support::sphere_spec(), o,
+                                                       [&](const std::string&) { ++made; }, full);
+  EXPECT_EQ(made, 0);
+  EXPECT_EQ(again.e_min, full.e_min);
+  EXPECT_EQ(again.e_max, full.e_max);
+}
