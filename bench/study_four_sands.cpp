@@ -311,6 +311,9 @@ bool selected(const Options& o, const std::string& what) {
 int main(int argc, char** argv) {
   grainlab::use_passive_wait_by_default(argv);  // as grainlab runs (core/wait_policy.h)
   Options o;
+  std::string run_names;  // "glass-beads, rounded, sub-angular, angular, damping"
+  for (const Sand& s : kSands) run_names += s.name + std::string(", ");
+  run_names += "damping";
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     const bool has_value = i + 1 < argc;
@@ -323,7 +326,7 @@ int main(int argc, char** argv) {
     else {
       fmt::print(stderr, "usage: study_four_sands [--quick] [--out DIR] [--grainlab PATH] [--threads N] "
                          "[--only sands|damping|SAND,SAND...] [--estimate]\n"
-                         "  SAND: glass-beads, rounded, sub-angular, angular, damping\n");
+                         "  SAND: {}\n", run_names);
       return 2;
     }
   }
@@ -334,8 +337,8 @@ int main(int argc, char** argv) {
       const bool known = name == "damping" || std::any_of(kSands.begin(), kSands.end(),
                                                           [&](const Sand& s) { return name == s.name; });
       if (!known) {
-        fmt::print(stderr, "study_four_sands: --only '{}': no run named '{}'; the names are glass-beads, "
-                           "rounded, sub-angular, angular and damping, or use sands / damping\n", o.only, name);
+        fmt::print(stderr, "study_four_sands: --only '{}': no run named '{}'; the names are {}, or use sands / "
+                           "damping\n", o.only, name, run_names);
         return 2;
       }
     }

@@ -176,6 +176,7 @@ void World::step(double dt) {
     checked_dt_ = dt;
   }
 
+  if (model.shapes.size() != shapes_classified_) classify_shapes();
   Stopwatch sw;
   const auto lap = [&](Phase p) {
     profile[p] += sw.seconds();
@@ -200,15 +201,13 @@ void World::step(double dt) {
   ++profile.steps;
 }
 
-int World::sub_contact_slots() const {
+void World::classify_shapes() {
   const bool compounds = std::any_of(model.shapes.begin(), model.shapes.end(),
                                      [](const Shape& s) { return s.kind == ShapeKind::Compound; });
-  return compounds ? kMaxSubContacts : 1;  // only compound routines write more than one
-}
-
-bool World::spheres_only() const {
-  return std::all_of(model.shapes.begin(), model.shapes.end(),
-                     [](const Shape& s) { return s.kind == ShapeKind::Sphere; });
+  sub_contact_slots_ = compounds ? kMaxSubContacts : 1;  // only compound routines write more than one
+  spheres_only_ = std::all_of(model.shapes.begin(), model.shapes.end(),
+                              [](const Shape& s) { return s.kind == ShapeKind::Sphere; });
+  shapes_classified_ = model.shapes.size();
 }
 
 void World::compute_bounds() {

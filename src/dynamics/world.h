@@ -113,9 +113,15 @@ class World {
   SweepAndPrune sap_;
   bool prepared_ = false;
   double checked_dt_ = -1;  // the step last checked against the critical step
-  bool spheres_only() const;  // every grain shape is a sphere: pair loops are cheap
-  int sub_contact_slots() const;
-  bool wall_pairs_due() const;  // a world of spheres: its kept wall-grain candidates are out of date  // most sub-contacts one pair of this model's shapes may write
+  // What the model's shapes allow, found again whenever their count changes
+  // (classify_shapes(), at the start of each step): shapes are only ever added.
+  void classify_shapes();
+  bool spheres_only() const { return spheres_only_; }  // every grain shape is a sphere: pair loops are cheap
+  int sub_contact_slots() const { return sub_contact_slots_; }  // most sub-contacts one pair may write
+  std::size_t shapes_classified_ = 0;
+  bool spheres_only_ = true;
+  int sub_contact_slots_ = 1;
+  bool wall_pairs_due() const;  // a world of spheres: its kept wall-grain candidates are out of date
   bool rebuild_due_ = true;  // compute_bounds found the candidate pairs due for a rebuild
   std::vector<Mat3> rot_;
   std::vector<Mat3> wall_rot_;  // wall rotations, as of the last broadphase
