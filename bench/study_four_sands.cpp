@@ -27,7 +27,8 @@
 //
 // The full study (1000 faces, box 12 x 12 x 6 largest grains) takes hours:
 // --estimate prints an estimate from the measured step rate of each sand's
-// deposition. --quick (a 4 x 4 x 2.6 mm box, 4 shapes of 100 faces, strains
+// deposition, slowed for a packed specimen of faceted grains by a factor
+// measured on the sub-angular run (kPackedSlowdown). --quick (a 4 x 4 x 2.6 mm box, 4 shapes of 100 faces, strains
 // 6 % and 12 %) checks the chain (configs, runs, the search, study.json,
 // the report), not the densities: it targets the lab's indices and skips the
 // own index measurement (see base_spec). --only damping still runs
@@ -267,12 +268,23 @@ void copy_preparation(const Options& o, const std::string& name, DirectShearSpec
   spec.specimen.deposition_friction = p.at("deposition_friction");
 }
 
+// How much slower a packed specimen of faceted grains steps than the same
+// grains depositing: every grain then touches about six others, and a
+// touching pair of 1000-face grains costs several microseconds
+// (collision/patch.cpp). Measured 2026-12-02 on the sub-angular study run,
+// 2 threads: deposition 172 steps/s, consolidation and shear 31.8 steps/s
+// (94,349 steps in 2967 s), the own e_min's compaction 18 steps/s (the
+// machine shared with builds): about 5.4 to 10; 6 is used. Spheres slow
+// down little (glass beads: 82,477 test steps in 43 s).
+constexpr double kPackedSlowdown = 6;
+
 void estimate(const Options& o) {
   Options full = o;
   full.quick = false;
   double total = 0;
-  fmt::print("Estimate of the full study ({} threads): each sand's rate from 2000 deposition steps\n",
-             resolve_threads(o.threads));
+  fmt::print("Estimate of the full study ({} threads): each sand's deposition rate from 2000 steps; a packed\n"
+             "specimen of faceted grains steps {:g} times slower (see the source)\n",
+             resolve_threads(o.threads), kPackedSlowdown);
   for (const Sand& s : kSands) {
     DirectShearSpec spec = base_spec(full, s);
     spec.specimen.indices = "lab";  // the rate only: no index measurement, no search
@@ -282,18 +294,23 @@ void estimate(const Options& o) {
     Stopwatch clock;
     t.advance(2000);
     const double rate = 2000 / clock.seconds();
+    const bool spheres = std::string(s.name) == "glass-beads";
+    const double packed_rate = spheres ? rate : rate / kPackedSlowdown;
     const double shear_steps = spec.shear.final_strain * spec.box.length / (t.shear_speed() * t.time_step());
-    // Preparation: about 3e4 steps each (deposition 100 g, compaction,
-    // consolidation; 1.4e4 in the 6 mm sphere box of tests/lab), 2 for the
-    // indices (in a box about as large), up to 8 trials of the search.
-    const double prep_steps = 10 * 3e4;
-    const int runs = std::string(s.name) == "glass-beads" ? 4 : 1;  // + the damping set
-    const double seconds = (prep_steps + runs * shear_steps) / rate;
+    // Steps measured in the sub-angular run (2026-12-02): own e_min 23,500
+    // (frictionless compaction: packed), e_max 6,100 (loose deposition), three
+    // trials of about 11,000 (mostly deposition), consolidation about 10,000
+    // (packed), then the shear.
+    const double loose_steps = 6.1e3 + 3 * 1.1e4, packed_steps = 2.35e4 + 1e4;
+    const int runs = spheres ? 4 : 1;  // + the damping set
+    const double seconds = loose_steps / rate + (packed_steps + runs * shear_steps) / packed_rate;
     total += seconds;
-    fmt::print("  {:<12} {:>6} grains  {:>7.0f} steps/s  shear {:.3g} steps x {}  ~{:.1f} h\n", s.name,
-               t.world().model.bodies.size(), rate, shear_steps, runs, seconds / 3600);
+    fmt::print("  {:<12} {:>6} grains  {:>7.0f} steps/s deposition, {:>7.0f} packed  shear {:.3g} steps x {}  ~{:.1f} h\n",
+               s.name, t.world().model.bodies.size(), rate, packed_rate, shear_steps, runs, seconds / 3600);
   }
-  fmt::print("total: about {:.1f} h\n", total / 3600);
+  fmt::print("total: about {:.1f} h (a lower bound where grains had not yet met in the 2000 steps timed, as\n"
+             "the angular grains in their taller fill: 421 steps/s against 80 for the sub-angular ones, 2026-12-02)\n",
+             total / 3600);
 }
 
 // Whether --only asks for this run: "sands" is the four sands, "damping" the
