@@ -59,6 +59,7 @@
 #include <chrono>
 #include <cmath>
 #include <csignal>
+#include <cstring>
 #include <condition_variable>
 #include <cstdlib>
 #include <filesystem>
@@ -66,6 +67,10 @@
 #include <mutex>
 #include <string>
 #include <thread>
+
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
 #include <vector>
 
 using namespace grainlab;
@@ -143,6 +148,40 @@ DirectShearSpec base_spec(const Options& o, const Sand& s) {
 volatile std::sig_atomic_t g_stop = 0;
 void on_stop(int) { g_stop = 1; }
 
+// Runs `args` (no shell) and waits for it to exit; its exit status, or 128 +
+// the signal that ended it. A stop signal to the study (g_stop) is passed on
+// to it, and the study goes on waiting until it has exited: grainlab saves
+// its checkpoint on SIGTERM, and the study must not count the sitting, nor
+// say whether there is a checkpoint, before that is done. (Through
+// std::system a stop signal to the process group ended the shell at once,
+// and the study looked for the checkpoint while grainlab was still writing it.)
+int run_and_wait(const std::vector<std::string>& args) {
+  std::vector<char*> argv;
+  for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  if (const int e = posix_spawn(&pid, argv[0], nullptr, nullptr, argv.data(), environ); e != 0)
+    input_error("cannot start '{}': {}", args[0], std::strerror(e));
+  bool passed_on = false;
+  int status = 0;
+  for (;;) {
+    if (waitpid(pid, &status, 0) == pid) break;
+    if (errno != EINTR) return 127;
+    if (g_stop && !passed_on) kill(pid, SIGTERM), passed_on = true;
+  }
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+}
+
+// SIGINT and SIGTERM set g_stop and interrupt a wait (no SA_RESTART).
+void catch_stop_signals() {
+  struct sigaction sa {};
+  sa.sa_handler = on_stop;
+  sigemptyset(&sa.sa_mask);
+  sa.sa_flags = 0;
+  sigaction(SIGINT, &sa, nullptr);
+  sigaction(SIGTERM, &sa, nullptr);
+}
+
 template <typename TimePoint>
 double seconds_since_epoch(TimePoint t) {
   return std::chrono::duration<double>(t.time_since_epoch()).count();
@@ -193,6 +232,8 @@ bool shear_run(const Options& o, DirectShearSpec spec, const std::string& name, 
     return true;
   }
   const bool resume = fs::exists(folder / "checkpoint.bin");
+  std::vector<std::string> args = {o.grainlab, "run", config.string(), "--quiet", "--no-report"};
+  if (resume) args.push_back("--resume");
   const std::string cmd = fmt::format("'{}' run '{}' --quiet --no-report{}", o.grainlab, config.string(),
                                       resume ? " --resume" : "");
   fmt::print("  {}\n", cmd);
@@ -206,6 +247,12 @@ bool shear_run(const Options& o, DirectShearSpec spec, const std::string& name, 
   std::mutex m;
   std::condition_variable cv;
   bool finished = false;
+  // The watcher blocks the stop signals, so that they reach the thread waiting for the run.
+  sigset_t stop_signals, before_watcher;
+  sigemptyset(&stop_signals);
+  sigaddset(&stop_signals, SIGINT);
+  sigaddset(&stop_signals, SIGTERM);
+  pthread_sigmask(SIG_BLOCK, &stop_signals, &before_watcher);
   std::thread watcher([&] {
     std::unique_lock lock(m);
     while (!cv.wait_for(lock, std::chrono::seconds(20), [&] { return finished; })) {
@@ -216,8 +263,9 @@ bool shear_run(const Options& o, DirectShearSpec spec, const std::string& name, 
       }
     }
   });
+  pthread_sigmask(SIG_SETMASK, &before_watcher, nullptr);
   Stopwatch clock;
-  const int rc = std::system(cmd.c_str());
+  const int rc = run_and_wait(args);
   {
     std::lock_guard lock(m);
     finished = true;
@@ -236,7 +284,8 @@ bool shear_run(const Options& o, DirectShearSpec spec, const std::string& name, 
     fmt::print("study stopped by a signal: {}; run the same command again to continue\n",
                fs::exists(folder / "checkpoint.bin") ? folder.string() + " has its checkpoint"
                                                      : folder.string() + " starts again (no checkpoint yet)");
-    std::exit(130);
+    record["stopped"] = true;
+    return false;
   }
   return rc == 0;
 }
@@ -360,8 +409,7 @@ int main(int argc, char** argv) {
       }
     }
   }
-  std::signal(SIGINT, on_stop);
-  std::signal(SIGTERM, on_stop);
+  catch_stop_signals();
   if (o.grainlab.empty()) o.grainlab = (fs::absolute(argv[0]).parent_path() / "grainlab").string();
   try {
     if (o.estimate) {
@@ -376,22 +424,35 @@ int main(int argc, char** argv) {
     Stopwatch all;
     DirectShearSpec beads;
     bool have_beads = false;
-    for (const Sand& s : kSands) {
+    const auto done = [&](const Sand& s) { return fs::exists(fs::path(o.out) / s.name / "run.json"); };
+    const auto order = [&](const nlohmann::json& j) {
+      for (std::size_t k = 0; k < kSands.size(); ++k)
+        if (j.at("name") == kSands[k].name) return k;
+      return kSands.size();
+    };
+    const auto tabulate = [&](const Sand& s) {
       DirectShearSpec spec = base_spec(o, s);
-      // A run done in an earlier sitting is tabulated whether selected or not.
-      if (!selected(o, s.name) && !fs::exists(fs::path(o.out) / s.name / "run.json")) continue;
       nlohmann::json j = {{"name", s.name}, {"sand_preset", s.preset}, {"grain_class", spec.grains.preset}};
       fmt::print("{}: {} grains of {} faces, box {:.2f} x {:.2f} x {:.2f} mm\n", s.name, spec.grains.preset,
                  spec.grains.faces, spec.box.length * 1e3, spec.box.width * 1e3, spec.box.height * 1e3);
       // One sand's failure leaves the others to run; the damping set needs
       // the beads' run (their indices and friction), so it runs with it.
       if (shear_run(o, spec, s.name, j)) copy_preparation(o, s.name, spec, j);
+      else if (j.contains("stopped")) return;  // by a signal: the run continues in a later sitting
       else j["error"] = fmt::format("grainlab run failed (exit status {})", j["run_exit_status"].get<int>());
       if (std::string(s.name) == "glass-beads" && !j.contains("error") && j.contains("e_min"))
         beads = spec, have_beads = true;
       study["sands"].push_back(j);
+      std::stable_sort(study["sands"].begin(), study["sands"].end(),
+                       [&](const nlohmann::json& x, const nlohmann::json& y) { return order(x) < order(y); });
       save(o, study);
-    }
+    };
+    // The runs done in earlier sittings first, selected or not, so that
+    // study.json has them whatever becomes of this sitting; then the others.
+    for (const Sand& s : kSands)
+      if (done(s)) tabulate(s);
+    for (const Sand& s : kSands)
+      if (!done(s) && selected(o, s.name) && !g_stop) tabulate(s);
     if (selected(o, "damping") && !have_beads)
       fmt::print("damping set skipped: it needs the glass beads' finished run (their indices and friction)\n");
     if (selected(o, "damping") && have_beads) {
@@ -403,13 +464,17 @@ int main(int argc, char** argv) {
         spec.specimen.relative_density_tolerance = 0.99;  // reports the density the beads' friction gives
         spec.specimen.tolerance = 10;                     // (--quick: on the lab's indices)
         nlohmann::json j = {{"gamma_n", gn}, {"gamma_t", gt}};
-        shear_run(o, spec, fmt::format("damping-{:g}-{:g}", gn, gt), j);
+        const std::string name = fmt::format("damping-{:g}-{:g}", gn, gt);
+        if (g_stop && !fs::exists(fs::path(o.out) / name / "run.json")) continue;  // stopped: tabulate only
+        shear_run(o, spec, name, j);
+        if (j.contains("stopped")) continue;
         study["damping"].push_back(j);
         save(o, study);
       }
     }
     study["sitting_wall_s"] = all.seconds();  // this sitting; each run's own is its run_wall_s
     save(o, study);
+    if (g_stop) return 130;  // study.json has every run done so far
     fmt::print("study done in {:.0f} s: {}/study.json; report: /usr/bin/python3 scripts/study_report.py {}\n",
                all.seconds(), o.out, o.out);
   } catch (const std::exception& e) {
