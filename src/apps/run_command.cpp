@@ -111,6 +111,13 @@ int run(const RunOptions& o) {
   LabTest& test = *prepared.test;
   test.world().settings.threads = spec.numerics.threads;
   observe_shear_analysis(test);  // the same on --resume: the rows of both runs then match
+  const std::filesystem::path specimen_file = out / "specimen.bin";
+  if (prepared.specimen) {  // another run's prepared specimen (specimen.from), checked by prepare_run
+    test.world().state = std::move(prepared.specimen->state);
+    test.load(prepared.specimen->protocol);
+    fmt::print("starting from the specimen in {} at step {} ({} phase)\n", spec.specimen.from,
+               test.world().state.step, test.phase_name());
+  }
   if (o.resume) {
     Checkpoint ck = load_checkpoint(checkpoint);
     if (ck.config_hash != config_hash(spec))
@@ -124,6 +131,7 @@ int run(const RunOptions& o) {
     write_file_atomically(out / "config.toml", to_toml(spec));
   }
   ShearSnapshots snapshots(out, test, o.resume);
+  if (!o.resume && prepared.specimen) snapshots.write_loading_start(test);
   const auto save = [&] {
     save_checkpoint(checkpoint, test.world().state, test.save(), config_hash(spec));
   };
@@ -158,6 +166,9 @@ int run(const RunOptions& o) {
     if (test.phase_index() != phase) {
       phase = test.phase_index();
       if (test.loading()) shear_start_step = w.state.step;
+      // The prepared specimen, for runs that shear it otherwise (specimen.from).
+      if (test.loading() && w.state.step == test.loading_start_step())
+        save_checkpoint(specimen_file, w.state, test.save(), specimen_hash(spec));
       if (const std::string note = test.phase_note(); !note.empty()) fmt::print("  {}\n", note);
       fmt::print("  phase {} from step {}\n", test.phase_name(), w.state.step);
     }

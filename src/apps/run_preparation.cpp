@@ -29,6 +29,41 @@ PreparedRun prepare_run(const DirectShearSpec& spec, const fs::path& out, bool r
     run.test = make_lab_test(r.test, r);
     return run;
   }
+  if (!spec.specimen.from.empty()) {
+    // Another run's prepared specimen: nothing to prepare here (run_command
+    // loads it); its preparation record, beside it, says how it was made.
+    const fs::path from = spec.specimen.from;
+    if (!fs::is_regular_file(from))
+      input_error("specimen.from = '{}': no such file. Give the specimen.bin that a run wrote in its output "
+                  "folder as its loading began (runs write it since 2026-12-02), or remove specimen.from to "
+                  "prepare a specimen",
+                  from.string());
+    const fs::path source_record = from.parent_path() / "preparation.json";
+    if (fs::exists(source_record)) {
+      run.record = read_json_file(source_record);
+      r.specimen.own_e_min = run.record.value("own_e_min", r.specimen.own_e_min);
+      r.specimen.own_e_max = run.record.value("own_e_max", r.specimen.own_e_max);
+      r.specimen.deposition_friction = run.record.value("deposition_friction", r.specimen.deposition_friction);
+    }
+    run.record["specimen_from"] = fs::absolute(from).string();
+    run.test = make_lab_test(r.test, r);
+    // The same grains, box, seed, test, stress and density scaling; the
+    // material and the loading may differ (io/checkpoint.h, specimen_hash).
+    run.specimen = load_checkpoint(from);
+    if (run.specimen->config_hash != specimen_hash(spec))
+      input_error("specimen.from = '{}': that specimen was prepared with other grains, box, seed, test, "
+                  "consolidation stress or density scaling than this config's. Use the grains, box, seed, "
+                  "test, consolidation.normal_stress and numerics.density_scaling of the run that wrote it "
+                  "(its config.toml, beside it); the material and the loading may differ",
+                  from.string());
+    if (run.specimen->state.bodies.size() != run.test->world().state.bodies.size())
+      input_error("specimen.from = '{}': it holds {} grains, this config places {}; use the config of the run "
+                  "that wrote it",
+                  from.string(), run.specimen->state.bodies.size(), run.test->world().state.bodies.size());
+    fs::create_directories(out);
+    write_json_file(record_file, run.record);
+    return run;
+  }
   if (!spec.grains.scan.empty()) {
     // A scanned specimen is consolidated as scanned: no index densities, no deposition friction.
     fmt::print("placing the grains of the scan {} where they were scanned, then consolidating\n", spec.grains.scan);

@@ -113,6 +113,17 @@ std::uint64_t fnv1a64(std::span<const std::uint8_t> bytes) {
   return h;
 }
 
+std::uint64_t specimen_hash(const DirectShearSpec& spec) {
+  DirectShearSpec key;  // every other field at its default
+  key.test = spec.test;
+  key.seed = spec.seed;
+  key.grains = spec.grains;
+  key.box = spec.box;
+  key.consolidation.normal_stress = spec.consolidation.normal_stress;
+  key.numerics.density_scaling = spec.numerics.density_scaling;
+  return config_hash(key);
+}
+
 std::uint64_t config_hash(const DirectShearSpec& spec) {
   const std::string text = to_toml(spec);
   return fnv1a64({reinterpret_cast<const std::uint8_t*>(text.data()), text.size()});

@@ -33,6 +33,12 @@ struct Checkpoint {
 //    protocol bytes through core/bytes.h, no Model fields.
 inline constexpr std::uint32_t kCheckpointVersion = 5;  // 3: contacts carry gain and twist; 4: pairs carry their GJK simplex; 5: the oedometer keeps its last row's stress
 
+// What a prepared specimen depends on (grains, box, seed, test, consolidation
+// stress, density scaling) as a hash: a specimen.bin (a checkpoint written as
+// loading began, with this in place of config_hash) fits any spec with the
+// same hash, whatever its material, damping or loading.
+std::uint64_t specimen_hash(const DirectShearSpec& spec);
+
 // Writes a checkpoint atomically (RunError on failure).
 void save_checkpoint(const std::filesystem::path& path, const State& state, std::span<const std::uint8_t> protocol,
                      std::uint64_t config_hash);

@@ -35,6 +35,11 @@ class ShearSnapshots {
   // test has just recorded a sample that is due (rules above).
   void update(const LabTest& test);
 
+  // A run started from another run's prepared specimen (specimen.from), whose
+  // state is that of the start of loading: that snapshot, as the run that
+  // prepared the specimen wrote it.
+  void write_loading_start(const LabTest& test) { write(test, 0); }
+
   // Call once the test is done: the final snapshot.
   void finish(const LabTest& test);
 

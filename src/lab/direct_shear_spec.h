@@ -78,6 +78,9 @@ struct SpecimenSpec {
   double deposition_friction = 0.12; // inter-grain friction while raining and compacting (lower: denser;
                                      // 0.12 gives e = 0.55 with the default grains and box, 0.05 gives 0.51);
                                      // < 0: chosen by bisection over trial preparations (lab/preparation_search.h)
+  std::string from;  // a specimen.bin another run wrote as its loading began: start from that
+                     // specimen instead of preparing one (same grains, box, seed, test, stress and
+                     // density scaling; the material and the loading may differ). "" = prepare
 };
 
 struct ConsolidationSpec {

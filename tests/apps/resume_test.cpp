@@ -82,14 +82,18 @@ class Resume : public ::testing::Test {
   // 7 seeds with and without the cache (docs/direct_shear.md).
   // `test_block`: "" for the direct shear, or a test's lines (which then use
   // glass beads: spheres, cheap).
-  fs::path config(const std::string& name, const std::string& test_block = "") {
+  // `specimen_lines`: more lines of [specimen]; `material_lines` of [material] (direct shear only).
+  fs::path config(const std::string& name, const std::string& test_block = "", const std::string& specimen_lines = "",
+                  const std::string& material_lines = "", int seed = 3) {
     const fs::path p = dir_ / (name + ".toml");
-    std::ofstream(p) << "seed = 3\n"
+    std::ofstream(p) << "seed = " << seed << "\n"
                      << (test_block.empty() ? std::string()
                                             : test_block + "\n[material]\npreset = \"glass-beads\"\n")
+                     << (material_lines.empty() ? std::string() : "[material]\n" + material_lines + "\n")
                      << "[grains]\nshapes = 4\nfaces = 120\n"
                      << "[box]\nlength = 0.003\nwidth = 0.003\nheight = 0.002\n"
                      << "[specimen]\nindices = \"lab\"\ndeposition_friction = 0.05\ntolerance = 1.0\n"
+                     << specimen_lines << "\n"
                      << "[shear]\nfinal_strain = 0.01\n[numerics]\nthreads = 1\n"
                      << "[output]\nsnapshot_interval = 0.004\nfolder = \"" << (dir_ / name).string() << "\"\n";
     return p;
@@ -170,6 +174,51 @@ TEST_F(Resume, KilledDuringShearThenResumedGivesTheSameSeries) {
     EXPECT_GE(want.size(), 4u) << pvd;  // 0, 0.4 % and 0.8 % of strain, and the end
     EXPECT_EQ(grainlab::read_pvd(dir_ / "killed" / pvd), want) << pvd;
   }
+}
+
+// A run writes its prepared specimen (specimen.bin) as its loading begins;
+// another run with specimen.from starts from it instead of preparing one.
+// With the same config it shears exactly as the first did (series and first
+// snapshot, byte for byte); with another friction it shears the same grains
+// otherwise; with other grains (another seed) or a missing file it is refused
+// before it writes anything.
+TEST_F(Resume, ARunFromAnotherRunsSpecimenShearsThatSpecimen) {
+  ::setenv("GRAINLAB_PYTHON", "/nonexistent/python3", 1);
+  ASSERT_EQ(wait_exit(start_run(config("first"), false, dir_ / "first.log")), 0) << read_file(dir_ / "first.log");
+  const fs::path specimen = dir_ / "first" / "specimen.bin";
+  ASSERT_TRUE(fs::exists(specimen));
+  const std::string from = "from = \"" + specimen.string() + "\"";
+  ASSERT_EQ(wait_exit(start_run(config("same", "", from), false, dir_ / "same.log")), 0) << read_file(dir_ / "same.log");
+  ::unsetenv("GRAINLAB_PYTHON");
+  EXPECT_NE(read_file(dir_ / "same.log").find("starting from the specimen"), std::string::npos);
+  EXPECT_EQ(read_file(dir_ / "first.log").find("starting from the specimen"), std::string::npos);
+  const std::string expected = read_file(dir_ / "first" / "series.csv");
+  ASSERT_GT(lines_in(dir_ / "first" / "series.csv"), 8u);
+  EXPECT_EQ(read_file(dir_ / "same" / "series.csv"), expected);
+  EXPECT_EQ(read_file(dir_ / "same" / "paraview" / "grains_0000.vtp"),
+            read_file(dir_ / "first" / "paraview" / "grains_0000.vtp"));
+  EXPECT_EQ(grainlab::read_pvd(dir_ / "same" / "paraview" / "grains.pvd"),
+            grainlab::read_pvd(dir_ / "first" / "paraview" / "grains.pvd"));
+  EXPECT_NE(read_file(dir_ / "same" / "run.json").find("\"specimen_from\""), std::string::npos);
+
+  // Another friction: the same specimen (the first row, taken as loading
+  // began, is the same), sheared otherwise.
+  ASSERT_EQ(wait_exit(start_run(config("slippery", "", from, "friction = 0.05"), false, dir_ / "slippery.log")), 0)
+      << read_file(dir_ / "slippery.log");
+  const std::string slippery = read_file(dir_ / "slippery" / "series.csv");
+  const auto first_rows = [](const std::string& csv) { return csv.substr(0, csv.find('\n', csv.find('\n') + 1)); };
+  EXPECT_EQ(first_rows(slippery), first_rows(expected));
+  EXPECT_NE(slippery, expected);
+
+  // Other grains, or no file: refused, nothing written.
+  EXPECT_NE(wait_exit(start_run(config("seed4", "", from, "", 4), false, dir_ / "seed4.log")), 0);
+  EXPECT_NE(read_file(dir_ / "seed4.log").find("prepared with other grains, box, seed"), std::string::npos)
+      << read_file(dir_ / "seed4.log");
+  EXPECT_FALSE(fs::exists(dir_ / "seed4"));
+  const std::string missing = "from = \"" + (dir_ / "nowhere" / "specimen.bin").string() + "\"";
+  EXPECT_NE(wait_exit(start_run(config("missing", "", missing), false, dir_ / "missing.log")), 0);
+  EXPECT_NE(read_file(dir_ / "missing.log").find("no such file"), std::string::npos) << read_file(dir_ / "missing.log");
+  EXPECT_FALSE(fs::exists(dir_ / "missing"));
 }
 
 TEST_F(Resume, OedometerKilledBetweenStagesThenResumedGivesTheSameSeries) {
