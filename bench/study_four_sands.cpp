@@ -469,7 +469,7 @@ int main(int argc, char** argv) {
                        gn, gt);
             continue;
           }
-          spec.specimen.from = fs::absolute(specimen).string();
+          spec.specimen.from = specimen.string();  // relative to where the study runs, as output.folder
         }
         spec.material.law = contact_law<HertzUserLaw>();
         spec.material.grain.gamma_n = gn;
