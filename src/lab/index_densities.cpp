@@ -19,7 +19,7 @@ bool IndexDensities::settled() const {
 }
 
 IndexPreparation prepare_index_specimen(const DirectShearSpec& spec, const IndexDensityOptions& o, bool dense,
-                                        std::uint64_t seed) {
+                                        std::uint64_t seed, const IndexProgress& progress) {
   if (o.box_diameters < 4 || o.height_diameters < 4)
     input_error("index densities: a box of {} x {} grain diameters is too small to have a bulk away from the "
                 "walls; use at least 4 (10 or more for the material's index voids)",
@@ -39,7 +39,14 @@ IndexPreparation prepare_index_specimen(const DirectShearSpec& spec, const Index
   const ShearPhase goal = dense ? ShearPhase::Consolidate : ShearPhase::Compact;
   const std::int64_t cap = std::min<std::int64_t>(o.max_steps, 399000);
   World& w = t.world();
-  while (t.phase() < goal && w.state.step - t.phase_step(t.phase()) < cap) t.advance(1000);
+  std::int64_t next_line = 10000;
+  while (t.phase() < goal && w.state.step - t.phase_step(t.phase()) < cap) {
+    t.advance(1000);
+    if (!progress || w.state.step < next_line) continue;
+    next_line += 10000;
+    progress(fmt::format("  {} seed {}: step {}, {} phase, {:.0f} s: {}", dense ? "e_min" : "e_max", seed,
+                         w.state.step, t.phase_name(), clock.seconds(), t.status_line()));
+  }
 
   IndexPreparation p;
   p.seed = seed;
@@ -75,7 +82,7 @@ IndexDensities measure_index_densities(const DirectShearSpec& spec, const IndexD
   for (int dense = 1; dense >= 0; --dense) {
     auto& list = dense ? r.dense : r.loose;
     for (int k = static_cast<int>(list.size()); k < o.seeds; ++k) {
-      list.push_back(prepare_index_specimen(spec, o, dense, spec.seed + k));
+      list.push_back(prepare_index_specimen(spec, o, dense, spec.seed + k, progress));
       const IndexPreparation& p = list.back();
       if (on_done) on_done(r);
       if (progress)

@@ -84,7 +84,9 @@ IndexDensities measure_index_densities(const DirectShearSpec& spec, const IndexD
                                        const IndexPreparationDone& on_done = {});
 
 // One preparation of the index box: dense (friction 0, compacted) or loose.
+// `progress` gets a line every 10,000 steps (phase, step, its status): a
+// dense preparation of faceted grains can take an hour.
 IndexPreparation prepare_index_specimen(const DirectShearSpec& spec, const IndexDensityOptions& options,
-                                        bool dense, std::uint64_t seed);
+                                        bool dense, std::uint64_t seed, const IndexProgress& progress = {});
 
 }  // namespace grainlab
