@@ -193,11 +193,25 @@ double seconds_since_epoch(TimePoint t) {
 
 // When the run in folder last saved progress that a later sitting reuses:
 // its checkpoint or its own index densities (0 if neither).
+// What a stopped run keeps in its folder: its checkpoint, its index
+// densities, and an index preparation under way (index_e_min_seed7.bin).
+std::vector<fs::path> kept_files(const fs::path& folder) {
+  std::vector<fs::path> kept;
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(folder, ec)) {
+    const std::string name = entry.path().filename().string();
+    if (name == "checkpoint.bin" || name == "index_densities.json" ||
+        (name.starts_with("index_e_m") && name.ends_with(".bin")))
+      kept.push_back(entry.path());
+  }
+  return kept;
+}
+
 double last_saved(const fs::path& folder) {
   double newest = 0;
-  for (const char* kept : {"checkpoint.bin", "index_densities.json"}) {
+  for (const fs::path& kept : kept_files(folder)) {
     std::error_code ec;
-    const auto t = fs::last_write_time(folder / kept, ec);
+    const auto t = fs::last_write_time(kept, ec);
     if (!ec) newest = std::max(newest, seconds_since_epoch(std::chrono::file_clock::to_sys(t)));
   }
   return newest;
@@ -277,7 +291,7 @@ bool shear_run(const Options& o, DirectShearSpec spec, const std::string& name, 
   cv.notify_one();
   watcher.join();
   // Stopped by a signal, the run kept what it saved (its checkpoint, if it
-  // had reached the test; nothing of a preparation under way).
+  // had reached the test; an index preparation under way; not a trial).
   const double end = g_stop ? std::max(start, last_saved(folder)) : start + clock.seconds();
   sittings.back()["end"] = end;
   write_json_file(sittings_file, sittings);
@@ -286,8 +300,8 @@ bool shear_run(const Options& o, DirectShearSpec spec, const std::string& name, 
   record["run_exit_status"] = rc;
   if (g_stop) {
     fmt::print("study stopped by a signal: {}; run the same command again to continue\n",
-               fs::exists(folder / "checkpoint.bin") ? folder.string() + " has its checkpoint"
-                                                     : folder.string() + " starts again (no checkpoint yet)");
+               !kept_files(folder).empty() ? folder.string() + " goes on from what it kept"
+                                           : folder.string() + " starts again (nothing kept yet)");
     record["stopped"] = true;
     return false;
   }

@@ -107,7 +107,17 @@ int run(const RunOptions& o) {
                   "or start a new run in another output.folder",
                   out.string(), fmt::join(diff, ", "));
   }
-  PreparedRun prepared = prepare_run(spec, out, o.resume);
+  // A stop signal while the specimen is prepared stops it (an index preparation in progress is kept).
+  std::signal(SIGINT, on_stop_signal);
+  std::signal(SIGTERM, on_stop_signal);
+  PreparedRun prepared;
+  try {
+    prepared = prepare_run(spec, out, o.resume, [] { return g_stop_signal != 0; });
+  } catch (const Stopped& e) {
+    fmt::print("stopped by signal {} while preparing the specimen: {}; run the same command again to go on\n",
+               g_stop_signal.load(), e.what());
+    return 130;
+  }
   LabTest& test = *prepared.test;
   test.world().settings.threads = spec.numerics.threads;
   observe_shear_analysis(test);  // the same on --resume: the rows of both runs then match
@@ -148,8 +158,6 @@ int run(const RunOptions& o) {
              spec.consolidation.normal_stress * 1e-3, test.time_step(), w.model.density_scale,
              shear_speed > 0 ? fmt::format(", shear speed {:.3g} mm/s", shear_speed * 1e3) : "",
              resolve_threads(w.settings.threads));
-  std::signal(SIGINT, on_stop_signal);
-  std::signal(SIGTERM, on_stop_signal);
 
   Stopwatch clock, since_checkpoint, since_line;
   std::size_t written_rows = test.series().size();

@@ -1,6 +1,7 @@
 // Own indices and deposition friction before a run (see run_preparation.h).
 #include "apps/run_preparation.h"
 
+#include "io/index_preparation_files.h"
 #include "io/json.h"
 #include "io/preparation_files.h"
 #include "lab/index_densities.h"
@@ -15,7 +16,8 @@ namespace grainlab::apps {
 
 namespace fs = std::filesystem;
 
-PreparedRun prepare_run(const DirectShearSpec& spec, const fs::path& out, bool resume) {
+PreparedRun prepare_run(const DirectShearSpec& spec, const fs::path& out, bool resume,
+                        const std::function<bool()>& stop) {
   DirectShearSpec r = spec;
   PreparedRun run;
   const fs::path record_file = out / "preparation.json";
@@ -95,10 +97,11 @@ PreparedRun prepare_run(const DirectShearSpec& spec, const fs::path& out, bool r
         fmt::print("  keeping the {} preparation(s) an earlier run saved in {}\n",
                    done.dense.size() + done.loose.size(), cache.string());
       fs::create_directories(out);
-      const IndexDensities d =
-          measure_index_densities(spec, options, print, std::move(done), [&](const IndexDensities& so_far) {
-            write_index_densities(cache, spec, so_far, false);
-          });
+      IndexPreparationFiles store(out, stop);
+      store.keep_interval_s = spec.output.checkpoint_interval;
+      const IndexDensities d = measure_index_densities(
+          spec, options, print, std::move(done),
+          [&](const IndexDensities& so_far) { write_index_densities(cache, spec, so_far, false); }, &store);
       write_index_densities(cache, spec, d);
       if (!d.settled())
         fmt::print("  warning: a preparation hit the step cap before it came to rest; the indices are what "
@@ -114,7 +117,9 @@ PreparedRun prepare_run(const DirectShearSpec& spec, const fs::path& out, bool r
                    ? fmt::format("Dr {:.2f} on the own indices e_min {:.4f}, e_max {:.4f}", r.specimen.relative_density,
                                  r.specimen.own_e_min, r.specimen.own_e_max)
                    : fmt::format("e {:.4f}", r.target_void_ratio()));
-    Preparation p = prepare_to_target(r, {}, print);
+    PreparationSearchOptions search;
+    search.stop = stop;
+    Preparation p = prepare_to_target(r, search, print);
     r.specimen.deposition_friction = p.friction;
     run.record["trials"] = to_json(p.trials);
     if (r.test == "direct-shear") {

@@ -1,6 +1,8 @@
 // Before `grainlab run` steps: the grains' own index void ratios (from the
 // config, from the run folder's index_densities.json when its inputs match,
-// or measured), and the deposition friction (from the config, or chosen by
+// or measured, each preparation kept in index_e_min_seedN.bin /
+// index_e_max_seedN.bin while it runs, so that a stopped or killed run goes
+// on from there), and the deposition friction (from the config, or chosen by
 // the preparation search, whose matching trial becomes the run's specimen).
 // Written to output.folder/preparation.json; --resume reads it back. With
 // specimen.from (another run's prepared specimen) nothing is prepared: the
@@ -14,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 
@@ -25,7 +28,11 @@ struct PreparedRun {
   std::optional<Checkpoint> specimen;  // specimen.from's state and protocol, to load into the test
 };
 
-// Resolves spec as above and builds the test. On resume only reads preparation.json.
-PreparedRun prepare_run(const DirectShearSpec& spec, const std::filesystem::path& out, bool resume);
+// Resolves spec as above and builds the test. On resume only reads
+// preparation.json. When `stop` returns true while the index densities are
+// measured or the deposition friction searched, Stopped (core/error.h) is
+// thrown (an index preparation in progress is kept; a trial is not).
+PreparedRun prepare_run(const DirectShearSpec& spec, const std::filesystem::path& out, bool resume,
+                        const std::function<bool()>& stop = {});
 
 }  // namespace grainlab::apps

@@ -20,6 +20,13 @@ class RunError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// A run asked to stop (a stop signal) while it prepared, before it could
+// checkpoint as a run: what could be kept was kept (the message says what).
+class Stopped : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 // Throws InputError with a formatted message.
 template <typename... Args>
 [[noreturn]] void input_error(fmt::format_string<Args...> f, Args&&... args) {

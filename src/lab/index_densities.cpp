@@ -18,8 +18,8 @@ bool IndexDensities::settled() const {
   return true;
 }
 
-IndexPreparation prepare_index_specimen(const DirectShearSpec& spec, const IndexDensityOptions& o, bool dense,
-                                        std::uint64_t seed, const IndexProgress& progress) {
+DirectShearSpec index_preparation_spec(const DirectShearSpec& spec, const IndexDensityOptions& o, bool dense,
+                                       std::uint64_t seed) {
   if (o.box_diameters < 4 || o.height_diameters < 4)
     input_error("index densities: a box of {} x {} grain diameters is too small to have a bulk away from the "
                 "walls; use at least 4 (10 or more for the material's index voids)",
@@ -32,20 +32,46 @@ IndexPreparation prepare_index_specimen(const DirectShearSpec& spec, const Index
   s.specimen.void_ratio = 0.7;  // only sets the grain count
   s.specimen.indices = "lab";
   s.specimen.deposition_friction = dense ? 0.0 : o.loose_friction;
+  return s;
+}
+
+IndexPreparation prepare_index_specimen(const DirectShearSpec& spec, const IndexDensityOptions& o, bool dense,
+                                        std::uint64_t seed, const IndexProgress& progress,
+                                        IndexPreparationStore* store) {
+  const DirectShearSpec s = index_preparation_spec(spec, o, dense, seed);
   DirectShearTest t(s);
   t.accept_any_density();
   t.world().settings.threads = spec.numerics.threads;
-  Stopwatch clock;
+  const char* name = dense ? "e_min" : "e_max";
+  World& w = t.world();
+  double earlier_s = 0;  // wall seconds of earlier sittings
+  if (store) {
+    earlier_s = store->restore(t, s);
+    if (earlier_s >= 0 && progress)
+      progress(fmt::format("  {} seed {}: going on from step {} ({} phase), kept after {:.0f} s", name, seed,
+                           w.state.step, t.phase_name(), earlier_s));
+    earlier_s = std::max(earlier_s, 0.0);
+  }
+  Stopwatch clock, since_kept;
   const ShearPhase goal = dense ? ShearPhase::Consolidate : ShearPhase::Compact;
   const std::int64_t cap = std::min<std::int64_t>(o.max_steps, 399000);
-  World& w = t.world();
-  std::int64_t next_line = 10000;
+  std::int64_t next_line = (w.state.step / 10000 + 1) * 10000;
   while (t.phase() < goal && w.state.step - t.phase_step(t.phase()) < cap) {
     t.advance(1000);
+    if (store && store->stop_requested()) {
+      store->keep(t, s, earlier_s + clock.seconds());
+      throw Stopped(fmt::format("the {} preparation of seed {} was stopped at step {} and kept (the run goes on "
+                                "from there)",
+                                                name, seed, w.state.step));
+    }
+    if (store && since_kept.seconds() >= store->keep_interval_s) {
+      store->keep(t, s, earlier_s + clock.seconds());
+      since_kept.reset();
+    }
     if (!progress || w.state.step < next_line) continue;
     next_line += 10000;
-    progress(fmt::format("  {} seed {}: step {}, {} phase, {:.0f} s: {}", dense ? "e_min" : "e_max", seed,
-                         w.state.step, t.phase_name(), clock.seconds(), t.status_line()));
+    progress(fmt::format("  {} seed {}: step {}, {} phase, {:.0f} s: {}", name, seed, w.state.step, t.phase_name(),
+                         earlier_s + clock.seconds(), t.status_line()));
   }
 
   IndexPreparation p;
@@ -65,13 +91,13 @@ IndexPreparation prepare_index_specimen(const DirectShearSpec& spec, const Index
   const Region r = bulk_region(L, L, dense ? top : top - d, d);
   p.void_ratio = void_ratio_in_region(w.model, w.state, r.lo, r.hi);
   p.whole_void_ratio = L * L * top / t.solid_volume() - 1;
-  p.wall_s = clock.seconds();
+  p.wall_s = earlier_s + clock.seconds();
   return p;
 }
 
 IndexDensities measure_index_densities(const DirectShearSpec& spec, const IndexDensityOptions& o,
                                        const IndexProgress& progress, IndexDensities done,
-                                       const IndexPreparationDone& on_done) {
+                                       const IndexPreparationDone& on_done, IndexPreparationStore* store) {
   if (o.seeds < 1) input_error("index densities: seeds = {}; use at least 1 (3 to see the spread)", o.seeds);
   IndexDensities r = std::move(done);
   if (!r.loose.empty() && r.dense.size() < static_cast<std::size_t>(o.seeds)) r.loose.clear();  // out of order
@@ -82,9 +108,10 @@ IndexDensities measure_index_densities(const DirectShearSpec& spec, const IndexD
   for (int dense = 1; dense >= 0; --dense) {
     auto& list = dense ? r.dense : r.loose;
     for (int k = static_cast<int>(list.size()); k < o.seeds; ++k) {
-      list.push_back(prepare_index_specimen(spec, o, dense, spec.seed + k, progress));
+      list.push_back(prepare_index_specimen(spec, o, dense, spec.seed + k, progress, store));
       const IndexPreparation& p = list.back();
       if (on_done) on_done(r);
+      if (store) store->drop(index_preparation_spec(spec, o, dense, spec.seed + k));  // kept in r now
       if (progress)
         progress(fmt::format("{} (friction {:g}) seed {}: bulk e = {:.4f}, whole-box e = {:.4f}, {} steps, "
                              "{:.0f} s{}",

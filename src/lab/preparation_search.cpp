@@ -32,14 +32,21 @@ double judged_relative_density(const DirectShearSpec& spec, double e) {
 
 }  // namespace
 
-std::unique_ptr<DirectShearTest> trial_preparation(const DirectShearSpec& spec, double mu, PreparationTrial& out) {
+std::unique_ptr<DirectShearTest> trial_preparation(const DirectShearSpec& spec, double mu, PreparationTrial& out,
+                                                   const std::function<bool()>& stop) {
   DirectShearSpec s = spec;
   s.specimen.deposition_friction = mu;
   Stopwatch clock;
   auto t = std::make_unique<DirectShearTest>(s);
   t->accept_any_density();
   t->world().settings.threads = spec.numerics.threads;
-  while (t->phase() < ShearPhase::Consolidate) t->advance(1000);
+  while (t->phase() < ShearPhase::Consolidate) {
+    t->advance(1000);
+    if (stop && stop())
+      throw Stopped(fmt::format("the trial preparation at deposition friction {:.4f} was stopped at step {} (trials "
+                                "are not kept)",
+                                mu, t->world().state.step));
+  }
   out.friction = mu;
   out.void_ratio = judged_void_ratio(spec, *t);
   out.relative_density = judged_relative_density(spec, out.void_ratio);
@@ -77,7 +84,10 @@ Preparation prepare_to_target(const DirectShearSpec& spec, const PreparationSear
   }
   double best_miss = std::numeric_limits<double>::infinity();
   std::string why;
-  const TrialPreparation run_trial = o.trial ? o.trial : TrialPreparation(trial_preparation);
+  const TrialPreparation run_trial =
+      o.trial ? o.trial : [&](const DirectShearSpec& s, double mu, PreparationTrial& out) {
+        return trial_preparation(s, mu, out, o.stop);
+      };
   double best_e = NAN;
   for (int k = 0; k < o.max_trials; ++k) {
     PreparationTrial trial;

@@ -62,6 +62,7 @@ struct PreparationSearchOptions {
   double max_friction = kLoosestDepositionFriction;  // the loosest end of the search
   int max_trials = 8;
   TrialPreparation trial;  // empty: trial_preparation below (tests put a model of e(mu) here)
+  std::function<bool()> stop;  // empty, or true to stop: trial_preparation throws Stopped (nothing kept)
 };
 
 struct Preparation {
@@ -73,7 +74,9 @@ struct Preparation {
 using PreparationProgress = std::function<void(const std::string&)>;
 
 // One trial preparation at deposition friction mu: the test after compaction.
-std::unique_ptr<DirectShearTest> trial_preparation(const DirectShearSpec& spec, double mu, PreparationTrial& out);
+// Every 1000 steps it asks `stop` (may be empty) and throws Stopped (core/error.h) when it says so.
+std::unique_ptr<DirectShearTest> trial_preparation(const DirectShearSpec& spec, double mu, PreparationTrial& out,
+                                                   const std::function<bool()>& stop = {});
 
 // The search above. spec.specimen.deposition_friction is ignored (the
 // search chooses it); own-index targets need the own indices known.
