@@ -252,8 +252,8 @@ bool shear_run(const Options& o, DirectShearSpec spec, const std::string& name, 
   const bool resume = fs::exists(folder / "checkpoint.bin");
   std::vector<std::string> args = {o.grainlab, "run", config.string(), "--quiet", "--no-report"};
   if (resume) args.push_back("--resume");
-  const std::string cmd = fmt::format("'{}' run '{}' --quiet --no-report{}", o.grainlab, config.string(),
-                                      resume ? " --resume" : "");
+  std::string cmd;  // as a shell would take it
+  for (const std::string& a : args) cmd += (cmd.empty() ? "'" : " '") + a + "'";
   fmt::print("  {}\n", cmd);
   std::fflush(stdout);
   fs::create_directories(folder);

@@ -121,7 +121,6 @@ int run(const RunOptions& o) {
   LabTest& test = *prepared.test;
   test.world().settings.threads = spec.numerics.threads;
   observe_shear_analysis(test);  // the same on --resume: the rows of both runs then match
-  const std::filesystem::path specimen_file = out / "specimen.bin";
   if (prepared.specimen) {  // another run's prepared specimen (specimen.from), checked by prepare_run
     test.world().state = std::move(prepared.specimen->state);
     test.load(prepared.specimen->protocol);
@@ -176,7 +175,7 @@ int run(const RunOptions& o) {
       if (test.loading()) shear_start_step = w.state.step;
       // The prepared specimen, for runs that shear it otherwise (specimen.from).
       if (test.loading() && w.state.step == test.loading_start_step())
-        save_checkpoint(specimen_file, w.state, test.save(), specimen_hash(spec));
+        save_checkpoint(out / "specimen.bin", w.state, test.save(), specimen_hash(spec));
       if (const std::string note = test.phase_note(); !note.empty()) fmt::print("  {}\n", note);
       fmt::print("  phase {} from step {}\n", test.phase_name(), w.state.step);
     }
