@@ -57,7 +57,7 @@ IndexPreparation prepare_index_specimen(const DirectShearSpec& spec, const Index
   const std::int64_t cap = std::min<std::int64_t>(o.max_steps, 399000);
   std::int64_t next_line = (w.state.step / 10000 + 1) * 10000;
   while (t.phase() < goal && w.state.step - t.phase_step(t.phase()) < cap) {
-    t.advance(1000);
+    t.advance(100);  // a stop is asked for every 100 steps: 30 s in a bed of angular grains
     if (store && store->stop_requested()) {
       store->keep(t, s, earlier_s + clock.seconds());
       throw Stopped(fmt::format("the {} preparation of seed {} was stopped at step {} and kept (the run goes on "

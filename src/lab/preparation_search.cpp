@@ -41,7 +41,7 @@ std::unique_ptr<DirectShearTest> trial_preparation(const DirectShearSpec& spec, 
   t->accept_any_density();
   t->world().settings.threads = spec.numerics.threads;
   while (t->phase() < ShearPhase::Consolidate) {
-    t->advance(1000);
+    t->advance(100);
     if (stop && stop())
       throw Stopped(fmt::format("the trial preparation at deposition friction {:.4f} was stopped at step {} (trials "
                                 "are not kept)",

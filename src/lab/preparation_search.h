@@ -74,7 +74,7 @@ struct Preparation {
 using PreparationProgress = std::function<void(const std::string&)>;
 
 // One trial preparation at deposition friction mu: the test after compaction.
-// Every 1000 steps it asks `stop` (may be empty) and throws Stopped (core/error.h) when it says so.
+// Every 100 steps it asks `stop` (may be empty) and throws Stopped (core/error.h) when it says so.
 std::unique_ptr<DirectShearTest> trial_preparation(const DirectShearSpec& spec, double mu, PreparationTrial& out,
                                                    const std::function<bool()>& stop = {});
 

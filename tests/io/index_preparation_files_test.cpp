@@ -21,14 +21,14 @@ TEST(IndexPreparationFiles, AStoppedMeasurementGoesOnFromItsKeptPreparationToThe
   const IndexDensityOptions o = testing_support::small_index_box();
   const IndexDensities straight = measure_index_densities(spec, o);
   ASSERT_TRUE(straight.settled());
-  // Stopped below at the 6th check: step 5200, in the compaction (measured:
-  // deposition to step 4200, compaction to 11700), where the protocol's
-  // phase, phase start and servo must come back too.
+  // Stopped below at the 43rd check (one every 100 steps): step 4300, in the
+  // compaction (measured: deposition to step 4200, compaction to 11700),
+  // where the protocol's phase, phase start and servo must come back too.
   ASSERT_GT(straight.dense.front().steps, 6000);
 
   test::IoTempDir dir;
   int asked = 0;
-  IndexPreparationFiles stopping(dir.path, [&] { return ++asked == 6; });
+  IndexPreparationFiles stopping(dir.path, [&] { return ++asked == 43; });
   const std::filesystem::path kept = stopping.file(index_preparation_spec(spec, o, true, spec.seed));
   EXPECT_EQ(kept.filename(), "index_e_min_seed3.bin");
   EXPECT_THROW(measure_index_densities(spec, o, {}, {}, {}, &stopping), Stopped);
@@ -45,7 +45,7 @@ TEST(IndexPreparationFiles, AStoppedMeasurementGoesOnFromItsKeptPreparationToThe
     const DirectShearSpec same = index_preparation_spec(spec, o, true, spec.seed);
     DirectShearTest u(same);
     EXPECT_GE(files.restore(u, same), 0);
-    EXPECT_EQ(u.world().state.step, 5200);
+    EXPECT_EQ(u.world().state.step, 4300);
     EXPECT_EQ(u.phase_name(), "compact");
   }
 
@@ -54,7 +54,7 @@ TEST(IndexPreparationFiles, AStoppedMeasurementGoesOnFromItsKeptPreparationToThe
   const IndexDensities resumed =
       measure_index_densities(spec, o, [&](const std::string& l) { lines.push_back(l); }, {}, {}, &going_on);
   ASSERT_FALSE(lines.empty());
-  EXPECT_NE(lines.front().find("going on from step 5200"), std::string::npos) << lines.front();
+  EXPECT_NE(lines.front().find("going on from step 4300"), std::string::npos) << lines.front();
   EXPECT_EQ(resumed.dense.front().steps, straight.dense.front().steps);
   EXPECT_EQ(resumed.e_min, straight.e_min);
   EXPECT_EQ(resumed.e_max, straight.e_max);
