@@ -1,0 +1,75 @@
+// Steps per second of the real preparation workload: a kept index
+// preparation (output.folder/index_e_min_seed7.bin, written while a run
+// measures the grains' own index densities; io/index_preparation_files.h)
+// loaded into its test and stepped, so that a change to the contact code is
+// timed on the grains and the packing that made it slow, and its bits
+// compared (the checksum of the final poses and velocities).
+//   build/bench_kept_preparation CONFIG KEPT_FILE [--steps N] [--threads T] [--repeat R]
+// e.g. build/bench_kept_preparation bench/results/study_four_sands/configs/angular.toml
+//        bench/results/study_four_sands/angular/index_e_min_seed7.bin --steps 20 --threads 1
+// Prints steps/s per repeat (each from the same kept state) and their median.
+#include "core/bytes.h"
+#include "core/timer.h"
+#include "io/checkpoint.h"
+#include "io/config.h"
+#include "io/index_preparation_files.h"
+#include "lab/direct_shear.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <regex>
+#include <string>
+#include <vector>
+
+using namespace grainlab;
+
+int main(int argc, char** argv) {
+  if (argc < 3) {
+    fmt::print(stderr, "usage: {} CONFIG KEPT_FILE [--steps N] [--threads T] [--repeat R]\n", argv[0]);
+    return 2;
+  }
+  int steps = 20, threads = 1, repeat = 3;
+  for (int i = 3; i + 1 < argc; i += 2) {
+    if (!std::strcmp(argv[i], "--steps")) steps = std::atoi(argv[i + 1]);
+    else if (!std::strcmp(argv[i], "--threads")) threads = std::atoi(argv[i + 1]);
+    else if (!std::strcmp(argv[i], "--repeat")) repeat = std::atoi(argv[i + 1]);
+  }
+  const std::string kept = argv[2];
+  std::smatch m;
+  const std::string name = std::filesystem::path(kept).filename().string();
+  if (!std::regex_match(name, m, std::regex(R"(index_e_(min|max)_seed(\d+)\.bin)"))) {
+    fmt::print(stderr, "{}: expected a kept preparation named index_e_min_seedN.bin or index_e_max_seedN.bin\n", kept);
+    return 2;
+  }
+  const DirectShearSpec spec = load_config(argv[1]);
+  const DirectShearSpec prepared = index_preparation_spec(spec, IndexDensityOptions{}, m[1] == "min",
+                                                          std::stoull(m[2].str()));
+  if (load_checkpoint(kept).config_hash != index_preparation_key(prepared)) {
+    fmt::print(stderr, "{} was not kept from {} (another key): give the config of the run that kept it\n", kept,
+               argv[1]);
+    return 2;
+  }
+  std::vector<double> rates;
+  for (int r = 0; r < repeat; ++r) {
+    DirectShearTest t(prepared);
+    t.accept_any_density();
+    t.world().settings.threads = threads;
+    IndexPreparationFiles files(std::filesystem::path(kept).parent_path());
+    files.restore(t, prepared);
+    if (r == 0)
+      fmt::print("{} grains, step {} ({} phase), {} contacts; {} steps on {} thread(s)\n", t.world().model.bodies.size(),
+                 t.world().state.step, t.phase_name(), t.world().state.contacts.size(), steps, threads);
+    Stopwatch clock;
+    for (int i = 0; i < steps; ++i) t.world().step(t.time_step());
+    rates.push_back(steps / clock.seconds());
+    double sum = 0;
+    for (const BodyState& b : t.world().state.bodies) sum += b.x.sum() + 1e-3 * b.v.sum() + 1e-6 * b.w.sum();
+    fmt::print("  repeat {}: {:.3f} steps/s, checksum {:.17g}\n", r + 1, rates.back(), sum);
+  }
+  std::sort(rates.begin(), rates.end());
+  fmt::print("median {:.3f} steps/s\n", rates[rates.size() / 2]);
+}
