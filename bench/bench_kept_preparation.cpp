@@ -1,6 +1,6 @@
 // Steps per second of the real preparation workload: a kept index
 // preparation (output.folder/index_e_min_seed7.bin, written while a run
-// measures the grains' own index densities; io/index_preparation_files.h)
+// measures the grains' own index densities; io/kept_preparations.h)
 // loaded into its test and stepped, so that a change to the contact code is
 // timed on the grains and the packing that made it slow, and its bits
 // compared (the checksum of the final poses and velocities).
@@ -12,7 +12,8 @@
 #include "core/timer.h"
 #include "io/checkpoint.h"
 #include "io/config.h"
-#include "io/index_preparation_files.h"
+#include "io/kept_preparations.h"
+#include "lab/index_densities.h"
 #include "lab/direct_shear.h"
 
 #include <fmt/format.h>
@@ -48,7 +49,7 @@ int main(int argc, char** argv) {
   const DirectShearSpec spec = load_config(argv[1]);
   const DirectShearSpec prepared = index_preparation_spec(spec, IndexDensityOptions{}, m[1] == "min",
                                                           std::stoull(m[2].str()));
-  if (load_checkpoint(kept).config_hash != index_preparation_key(prepared)) {
+  if (load_checkpoint(kept).config_hash != kept_preparation_key(m[0].str().substr(0, m[0].str().size() - 4), prepared)) {
     fmt::print(stderr, "{} was not kept from {} (another key): give the config of the run that kept it\n", kept,
                argv[1]);
     return 2;
@@ -58,8 +59,8 @@ int main(int argc, char** argv) {
     DirectShearTest t(prepared);
     t.accept_any_density();
     t.world().settings.threads = threads;
-    IndexPreparationFiles files(std::filesystem::path(kept).parent_path());
-    files.restore(t, prepared);
+    KeptPreparations files(std::filesystem::path(kept).parent_path());
+    files.restore(t, std::filesystem::path(kept).stem().string(), prepared);
     if (r == 0)
       fmt::print("{} grains, step {} ({} phase), {} contacts; {} steps on {} thread(s)\n", t.world().model.bodies.size(),
                  t.world().state.step, t.phase_name(), t.world().state.contacts.size(), steps, threads);

@@ -194,14 +194,15 @@ double seconds_since_epoch(TimePoint t) {
 // When the run in folder last saved progress that a later sitting reuses:
 // its checkpoint or its own index densities (0 if neither).
 // What a stopped run keeps in its folder: its checkpoint, its index
-// densities, and an index preparation under way (index_e_min_seed7.bin).
+// densities, the index preparation and trials (index_e_min_seed7.bin,
+// trial_friction_0.02990000.bin).
 std::vector<fs::path> kept_files(const fs::path& folder) {
   std::vector<fs::path> kept;
   std::error_code ec;
   for (const auto& entry : fs::directory_iterator(folder, ec)) {
     const std::string name = entry.path().filename().string();
     if (name == "checkpoint.bin" || name == "index_densities.json" ||
-        (name.starts_with("index_e_m") && name.ends_with(".bin")))
+        ((name.starts_with("index_e_m") || name.starts_with("trial_")) && name.ends_with(".bin")))
       kept.push_back(entry.path());
   }
   return kept;
@@ -291,7 +292,7 @@ bool shear_run(const Options& o, DirectShearSpec spec, const std::string& name, 
   cv.notify_one();
   watcher.join();
   // Stopped by a signal, the run kept what it saved (its checkpoint, if it
-  // had reached the test; an index preparation under way; not a trial).
+  // had reached the test, or its preparations: io/kept_preparations.h).
   const double end = g_stop ? std::max(start, last_saved(folder)) : start + clock.seconds();
   sittings.back()["end"] = end;
   write_json_file(sittings_file, sittings);

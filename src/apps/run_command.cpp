@@ -15,6 +15,7 @@
 #include "io/checkpoint.h"
 #include "io/config.h"
 #include "io/json.h"
+#include "io/kept_preparations.h"
 #include "io/run_summary.h"
 #include "io/shear_analysis.h"
 #include "io/shear_snapshots.h"
@@ -107,7 +108,7 @@ int run(const RunOptions& o) {
                   "or start a new run in another output.folder",
                   out.string(), fmt::join(diff, ", "));
   }
-  // A stop signal while the specimen is prepared stops it (an index preparation in progress is kept).
+  // A stop signal while the specimen is prepared keeps the preparation in progress and stops.
   std::signal(SIGINT, on_stop_signal);
   std::signal(SIGTERM, on_stop_signal);
   PreparedRun prepared;
@@ -143,6 +144,7 @@ int run(const RunOptions& o) {
   if (!o.resume && prepared.specimen) snapshots.write_loading_start(test);
   const auto save = [&] {
     save_checkpoint(checkpoint, test.world().state, test.save(), config_hash(spec));
+    drop_kept_trials(out);  // the run goes on from its checkpoint now
   };
 
   const World& w = test.world();

@@ -1,7 +1,7 @@
 // Own indices and deposition friction before a run (see run_preparation.h).
 #include "apps/run_preparation.h"
 
-#include "io/index_preparation_files.h"
+#include "io/kept_preparations.h"
 #include "io/json.h"
 #include "io/preparation_files.h"
 #include "lab/index_densities.h"
@@ -75,6 +75,8 @@ PreparedRun prepare_run(const DirectShearSpec& spec, const fs::path& out, bool r
     return run;
   }
   check_specimen_fits(spec);
+  KeptPreparations store(out, stop);  // what a stopped or killed preparation goes on from
+  store.keep_interval_s = spec.output.checkpoint_interval;
   const auto print = [](const std::string& line) {
     fmt::print("  {}\n", line);
     std::fflush(stdout);
@@ -97,8 +99,6 @@ PreparedRun prepare_run(const DirectShearSpec& spec, const fs::path& out, bool r
         fmt::print("  keeping the {} preparation(s) an earlier run saved in {}\n",
                    done.dense.size() + done.loose.size(), cache.string());
       fs::create_directories(out);
-      IndexPreparationFiles store(out, stop);
-      store.keep_interval_s = spec.output.checkpoint_interval;
       const IndexDensities d = measure_index_densities(
           spec, options, print, std::move(done),
           [&](const IndexDensities& so_far) { write_index_densities(cache, spec, so_far, false); }, &store);
@@ -118,7 +118,7 @@ PreparedRun prepare_run(const DirectShearSpec& spec, const fs::path& out, bool r
                                  r.specimen.own_e_min, r.specimen.own_e_max)
                    : fmt::format("e {:.4f}", r.target_void_ratio()));
     PreparationSearchOptions search;
-    search.stop = stop;
+    search.store = &store;
     Preparation p = prepare_to_target(r, search, print);
     r.specimen.deposition_friction = p.friction;
     run.record["trials"] = to_json(p.trials);

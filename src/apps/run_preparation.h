@@ -1,10 +1,10 @@
 // Before `grainlab run` steps: the grains' own index void ratios (from the
 // config, from the run folder's index_densities.json when its inputs match,
-// or measured, each preparation kept in index_e_min_seedN.bin /
-// index_e_max_seedN.bin while it runs, so that a stopped or killed run goes
-// on from there), and the deposition friction (from the config, or chosen by
+// or measured), and the deposition friction (from the config, or chosen by
 // the preparation search, whose matching trial becomes the run's specimen).
-// Written to output.folder/preparation.json; --resume reads it back. With
+// Each preparation, index or trial, is kept in the run folder while it runs
+// (io/kept_preparations.h), so that a stopped or killed run goes on from
+// there. Written to output.folder/preparation.json; --resume reads it back. With
 // specimen.from (another run's prepared specimen) nothing is prepared: the
 // record is that run's preparation.json plus "specimen_from", and the caller
 // loads the specimen into the test.
@@ -30,8 +30,8 @@ struct PreparedRun {
 
 // Resolves spec as above and builds the test. On resume only reads
 // preparation.json. When `stop` returns true while the index densities are
-// measured or the deposition friction searched, Stopped (core/error.h) is
-// thrown (an index preparation in progress is kept; a trial is not).
+// measured or the deposition friction searched, the preparation in progress
+// is kept and Stopped (core/error.h) thrown.
 PreparedRun prepare_run(const DirectShearSpec& spec, const std::filesystem::path& out, bool resume,
                         const std::function<bool()>& stop = {});
 

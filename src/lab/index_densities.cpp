@@ -35,18 +35,23 @@ DirectShearSpec index_preparation_spec(const DirectShearSpec& spec, const IndexD
   return s;
 }
 
+std::string index_preparation_name(bool dense, std::uint64_t seed) {
+  return fmt::format("index_{}_seed{}", dense ? "e_min" : "e_max", seed);
+}
+
 IndexPreparation prepare_index_specimen(const DirectShearSpec& spec, const IndexDensityOptions& o, bool dense,
                                         std::uint64_t seed, const IndexProgress& progress,
-                                        IndexPreparationStore* store) {
+                                        PreparationStore* store) {
   const DirectShearSpec s = index_preparation_spec(spec, o, dense, seed);
   DirectShearTest t(s);
   t.accept_any_density();
   t.world().settings.threads = spec.numerics.threads;
   const char* name = dense ? "e_min" : "e_max";
+  const std::string kept = index_preparation_name(dense, seed);
   World& w = t.world();
   double earlier_s = 0;  // wall seconds of earlier sittings
   if (store) {
-    earlier_s = store->restore(t, s);
+    earlier_s = store->restore(t, kept, s);
     if (earlier_s >= 0 && progress)
       progress(fmt::format("  {} seed {}: going on from step {} ({} phase), kept after {:.0f} s", name, seed,
                            w.state.step, t.phase_name(), earlier_s));
@@ -59,13 +64,13 @@ IndexPreparation prepare_index_specimen(const DirectShearSpec& spec, const Index
   while (t.phase() < goal && w.state.step - t.phase_step(t.phase()) < cap) {
     t.advance(100);  // a stop is asked for every 100 steps: 30 s in a bed of angular grains
     if (store && store->stop_requested()) {
-      store->keep(t, s, earlier_s + clock.seconds());
+      store->keep(t, kept, s, earlier_s + clock.seconds());
       throw Stopped(fmt::format("the {} preparation of seed {} was stopped at step {} and kept (the run goes on "
                                 "from there)",
                                                 name, seed, w.state.step));
     }
     if (store && since_kept.seconds() >= store->keep_interval_s) {
-      store->keep(t, s, earlier_s + clock.seconds());
+      store->keep(t, kept, s, earlier_s + clock.seconds());
       since_kept.reset();
     }
     if (!progress || w.state.step < next_line) continue;
@@ -97,7 +102,7 @@ IndexPreparation prepare_index_specimen(const DirectShearSpec& spec, const Index
 
 IndexDensities measure_index_densities(const DirectShearSpec& spec, const IndexDensityOptions& o,
                                        const IndexProgress& progress, IndexDensities done,
-                                       const IndexPreparationDone& on_done, IndexPreparationStore* store) {
+                                       const IndexPreparationDone& on_done, PreparationStore* store) {
   if (o.seeds < 1) input_error("index densities: seeds = {}; use at least 1 (3 to see the spread)", o.seeds);
   IndexDensities r = std::move(done);
   if (!r.loose.empty() && r.dense.size() < static_cast<std::size_t>(o.seeds)) r.loose.clear();  // out of order
@@ -111,7 +116,7 @@ IndexDensities measure_index_densities(const DirectShearSpec& spec, const IndexD
       list.push_back(prepare_index_specimen(spec, o, dense, spec.seed + k, progress, store));
       const IndexPreparation& p = list.back();
       if (on_done) on_done(r);
-      if (store) store->drop(index_preparation_spec(spec, o, dense, spec.seed + k));  // kept in r now
+      if (store) store->drop(index_preparation_name(dense, spec.seed + k));  // in r now
       if (progress)
         progress(fmt::format("{} (friction {:g}) seed {}: bulk e = {:.4f}, whole-box e = {:.4f}, {} steps, "
                              "{:.0f} s{}",

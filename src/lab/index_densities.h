@@ -26,14 +26,15 @@
 // Settling is capped at max_steps per preparation: frictionless faceted
 // grains may ring without coming to rest; the result then says so
 // (settled = false) and gives what was reached.
-// A preparation of faceted grains can take hours; given an
-// IndexPreparationStore it is kept on an interval and on a stop request, and
-// a later measurement goes on from where it was (deterministic: the result is
-// the same to the bit as an uninterrupted preparation's).
+// A preparation of faceted grains can take hours; given a PreparationStore
+// (lab/preparation_store.h) it is kept as "index_e_min_seed7" (or e_max) on
+// an interval and on a stop request, and a later measurement goes on from
+// where it was, to the same result bit for bit.
 #pragma once
 
 #include "lab/direct_shear_spec.h"
 #include "lab/preparation_search.h"
+#include "lab/preparation_store.h"
 
 #include <cstdint>
 #include <functional>
@@ -78,28 +79,6 @@ using IndexProgress = std::function<void(const std::string&)>;
 // take the better part of an hour.
 using IndexPreparationDone = std::function<void(const IndexDensities& so_far)>;
 
-class DirectShearTest;
-
-// Keeps one preparation in progress (apps: a checkpoint file per
-// preparation). `prepared` is the preparation's own spec (its seed, box and
-// deposition friction): what a kept preparation must match.
-class IndexPreparationStore {
- public:
-  virtual ~IndexPreparationStore() = default;
-  // Restores `test` (State, then protocol) from the kept preparation of
-  // `prepared` if there is one; returns the wall seconds it had run, or a
-  // negative number if nothing was kept.
-  virtual double restore(DirectShearTest& test, const DirectShearSpec& prepared) = 0;
-  // Keeps the preparation as it is now, after `wall_s` seconds in all.
-  virtual void keep(const DirectShearTest& test, const DirectShearSpec& prepared, double wall_s) = 0;
-  // The preparation is finished and passed to on_done: what was kept of it can go.
-  virtual void drop(const DirectShearSpec& prepared) = 0;
-  // True when the caller wants the measurement to stop (a signal): the
-  // preparation is kept and Stopped (core/error.h) thrown.
-  virtual bool stop_requested() const { return false; }
-  double keep_interval_s = 600;  // s of wall-clock time between keeps
-};
-
 // Measures e_min and e_max of the grains (spec.grains, spec.material,
 // spec.consolidation.normal_stress, spec.numerics) as above. The
 // preparations already in `done` (dense, then loose, in seed order: what an
@@ -108,12 +87,15 @@ class IndexPreparationStore {
 IndexDensities measure_index_densities(const DirectShearSpec& spec, const IndexDensityOptions& options,
                                        const IndexProgress& progress = {}, IndexDensities done = {},
                                        const IndexPreparationDone& on_done = {},
-                                       IndexPreparationStore* store = nullptr);
+                                       PreparationStore* store = nullptr);
 
 // The direct shear spec of one preparation of the index box (its seed, box
 // and deposition friction); InputError for a box under 4 diameters.
 DirectShearSpec index_preparation_spec(const DirectShearSpec& spec, const IndexDensityOptions& options, bool dense,
                                        std::uint64_t seed);
+
+// The name a preparation is kept under: "index_e_min_seed7", "index_e_max_seed7".
+std::string index_preparation_name(bool dense, std::uint64_t seed);
 
 // One preparation of the index box: dense (friction 0, compacted) or loose.
 // `progress` gets a line every 10,000 steps (phase, step, its status): a
@@ -121,6 +103,6 @@ DirectShearSpec index_preparation_spec(const DirectShearSpec& spec, const IndexD
 // on from what the store kept and keeps what it does (above).
 IndexPreparation prepare_index_specimen(const DirectShearSpec& spec, const IndexDensityOptions& options,
                                         bool dense, std::uint64_t seed, const IndexProgress& progress = {},
-                                        IndexPreparationStore* store = nullptr);
+                                        PreparationStore* store = nullptr);
 
 }  // namespace grainlab

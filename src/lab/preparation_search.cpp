@@ -32,26 +32,45 @@ double judged_relative_density(const DirectShearSpec& spec, double e) {
 
 }  // namespace
 
+std::string trial_preparation_name(double mu) { return fmt::format("trial_friction_{:.8f}", mu); }
+
 std::unique_ptr<DirectShearTest> trial_preparation(const DirectShearSpec& spec, double mu, PreparationTrial& out,
-                                                   const std::function<bool()>& stop) {
+                                                   PreparationStore* store) {
   DirectShearSpec s = spec;
   s.specimen.deposition_friction = mu;
-  Stopwatch clock;
+  Stopwatch clock, since_kept;
   auto t = std::make_unique<DirectShearTest>(s);
   t->accept_any_density();
   t->world().settings.threads = spec.numerics.threads;
-  while (t->phase() < ShearPhase::Consolidate) {
-    t->advance(100);
-    if (stop && stop())
-      throw Stopped(fmt::format("the trial preparation at deposition friction {:.4f} was stopped at step {} (trials "
-                                "are not kept)",
-                                mu, t->world().state.step));
+  const std::string name = trial_preparation_name(mu);
+  const double earlier_s = store ? std::max(0.0, store->restore(*t, name, s)) : 0.0;
+  bool stepped = false;
+  try {
+    while (t->phase() < ShearPhase::Consolidate) {
+      t->advance(100);
+      stepped = true;
+      if (!store) continue;
+      if (store->stop_requested()) {
+        store->keep(*t, name, s, earlier_s + clock.seconds());
+        throw Stopped(fmt::format("the trial preparation at deposition friction {:.4f} was stopped at step {} and "
+                                  "kept (the run goes on from there)",
+                                  mu, t->world().state.step));
+      }
+      if (since_kept.seconds() >= store->keep_interval_s) {
+        store->keep(*t, name, s, earlier_s + clock.seconds());
+        since_kept.reset();
+      }
+    }
+  } catch (const RunError&) {
+    if (store) store->drop(name);
+    throw;
   }
+  if (store && stepped) store->keep(*t, name, s, earlier_s + clock.seconds());  // finished: taken back at once
   out.friction = mu;
   out.void_ratio = judged_void_ratio(spec, *t);
   out.relative_density = judged_relative_density(spec, out.void_ratio);
   out.steps = t->world().state.step;
-  out.wall_s = clock.seconds();
+  out.wall_s = earlier_s + clock.seconds();
   return t;
 }
 
@@ -86,7 +105,7 @@ Preparation prepare_to_target(const DirectShearSpec& spec, const PreparationSear
   std::string why;
   const TrialPreparation run_trial =
       o.trial ? o.trial : [&](const DirectShearSpec& s, double mu, PreparationTrial& out) {
-        return trial_preparation(s, mu, out, o.stop);
+        return trial_preparation(s, mu, out, o.store);
       };
   double best_e = NAN;
   for (int k = 0; k < o.max_trials; ++k) {

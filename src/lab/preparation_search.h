@@ -26,6 +26,7 @@
 #pragma once
 
 #include "lab/direct_shear.h"
+#include "lab/preparation_store.h"
 
 #include <cstdint>
 #include <functional>
@@ -62,7 +63,7 @@ struct PreparationSearchOptions {
   double max_friction = kLoosestDepositionFriction;  // the loosest end of the search
   int max_trials = 8;
   TrialPreparation trial;  // empty: trial_preparation below (tests put a model of e(mu) here)
-  std::function<bool()> stop;  // empty, or true to stop: trial_preparation throws Stopped (nothing kept)
+  PreparationStore* store = nullptr;  // keeps the trials (trial_preparation below)
 };
 
 struct Preparation {
@@ -74,9 +75,14 @@ struct Preparation {
 using PreparationProgress = std::function<void(const std::string&)>;
 
 // One trial preparation at deposition friction mu: the test after compaction.
-// Every 100 steps it asks `stop` (may be empty) and throws Stopped (core/error.h) when it says so.
+// With a store it goes on from what the store kept of it (a finished one is
+// taken back at once), keeps it every store->keep_interval_s and when it
+// ends, and when the store asks to stop (every 100 steps) keeps it and
+// throws Stopped (core/error.h). A trial that fails is dropped.
 std::unique_ptr<DirectShearTest> trial_preparation(const DirectShearSpec& spec, double mu, PreparationTrial& out,
-                                                   const std::function<bool()>& stop = {});
+                                                   PreparationStore* store = nullptr);
+// The name a trial is kept under: "trial_friction_0.02990000".
+std::string trial_preparation_name(double mu);
 
 // The search above. spec.specimen.deposition_friction is ignored (the
 // search chooses it); own-index targets need the own indices known.

@@ -1,0 +1,82 @@
+// Preparations kept as checkpoint files (see kept_preparations.h).
+#include "io/kept_preparations.h"
+
+#include "core/bytes.h"
+#include "io/checkpoint.h"
+#include "io/json.h"
+#include "io/preparation_files.h"
+#include "lab/direct_shear.h"
+
+#include <fmt/format.h>
+
+#include <span>
+#include <utility>
+
+namespace grainlab {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::uint64_t hash_text(const std::string& text) {
+  const auto* bytes = reinterpret_cast<const std::uint8_t*>(text.data());
+  return fnv1a64(std::span(bytes, text.size()));
+}
+
+}  // namespace
+
+std::uint64_t kept_preparation_key(const std::string& name, const DirectShearSpec& prepared) {
+  if (name.starts_with("index_"))
+    return hash_text(index_cache_key(prepared) + spec_to_json(prepared)["box"].dump() +
+                     fmt::format("{:a}", prepared.specimen.deposition_friction));
+  DirectShearSpec s = prepared;
+  s.output = DirectShearSpec{}.output;
+  s.numerics.threads = 0;
+  s.shear = DirectShearSpec{}.shear;
+  s.oedometer = DirectShearSpec{}.oedometer;
+  s.triaxial = DirectShearSpec{}.triaxial;
+  return config_hash(s);
+}
+
+void drop_kept_trials(const fs::path& folder) {
+  std::error_code ec;
+  std::vector<fs::path> trials;
+  for (const auto& entry : fs::directory_iterator(folder, ec)) {
+    const std::string name = entry.path().filename().string();
+    if (name.starts_with("trial_") && name.ends_with(".bin")) trials.push_back(entry.path());
+  }
+  for (const fs::path& f : trials) fs::remove(f, ec);
+}
+
+KeptPreparations::KeptPreparations(fs::path folder, std::function<bool()> stop)
+    : folder_(std::move(folder)), stop_(std::move(stop)) {}
+
+fs::path KeptPreparations::file(const std::string& name) const { return folder_ / (name + ".bin"); }
+
+double KeptPreparations::restore(DirectShearTest& test, const std::string& name, const DirectShearSpec& prepared) {
+  const fs::path f = file(name);
+  if (!fs::exists(f)) return -1;
+  Checkpoint ck = load_checkpoint(f);
+  if (ck.config_hash != kept_preparation_key(name, prepared)) return -1;
+  ByteReader in(ck.protocol, f.string());
+  const double wall_s = in.f64();
+  test.world().state = std::move(ck.state);
+  test.load(in.raw(in.left()));
+  return wall_s;
+}
+
+void KeptPreparations::keep(const DirectShearTest& test, const std::string& name, const DirectShearSpec& prepared,
+                            double wall_s) {
+  ByteWriter protocol;
+  protocol.f64(wall_s);
+  protocol.raw(test.save());
+  fs::create_directories(folder_);
+  save_checkpoint(file(name), test.world().state, protocol.bytes, kept_preparation_key(name, prepared));
+}
+
+void KeptPreparations::drop(const std::string& name) {
+  std::error_code ignored;
+  fs::remove(file(name), ignored);
+}
+
+}  // namespace grainlab

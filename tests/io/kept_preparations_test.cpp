@@ -1,0 +1,105 @@
+// Preparations kept as files (io/kept_preparations.h): a measurement of the
+// index densities stopped during its dense preparation keeps it, and the
+// next one goes on from there and ends where an uninterrupted measurement
+// ends, to the bit (same steps, same e_min and e_max); the kept file then
+// goes. A kept file of other inputs (another seed) is not taken. A trial of
+// the friction search, stopped and gone on from, ends as an uninterrupted
+// one; kept at its end, it is taken back at once; the run's first
+// checkpoint removes the trials.
+#include "io/kept_preparations.h"
+#include "io_test_helpers.h"
+#include "lab/direct_shear.h"
+#include "lab/index_densities.h"
+#include "lab/preparation_search.h"
+#include "lab/sphere_box.h"
+
+#include "core/error.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+using namespace grainlab;
+
+TEST(KeptPreparations, AStoppedIndexMeasurementGoesOnFromItsKeptPreparationToTheSameResult) {
+  const DirectShearSpec spec = testing_support::sphere_spec();
+  const IndexDensityOptions o = testing_support::small_index_box();
+  const IndexDensities straight = measure_index_densities(spec, o);
+  ASSERT_TRUE(straight.settled());
+  // Stopped below at the 43rd check (one every 100 steps): step 4300, in the
+  // compaction (measured: deposition to step 4200, compaction to 11700),
+  // where the protocol's phase, phase start and servo must come back too.
+  ASSERT_GT(straight.dense.front().steps, 6000);
+
+  test::IoTempDir dir;
+  int asked = 0;
+  KeptPreparations stopping(dir.path, [&] { return ++asked == 43; });
+  const std::string name = index_preparation_name(true, spec.seed);
+  EXPECT_EQ(stopping.file(name).filename(), "index_e_min_seed3.bin");
+  EXPECT_THROW(measure_index_densities(spec, o, {}, {}, {}, &stopping), Stopped);
+  ASSERT_TRUE(std::filesystem::exists(stopping.file(name)));
+
+  // Another seed's preparation does not take it.
+  DirectShearSpec other = spec;
+  other.seed = 4;
+  {
+    KeptPreparations files(dir.path);
+    const DirectShearSpec prepared = index_preparation_spec(other, o, true, other.seed);
+    DirectShearTest t(prepared);
+    EXPECT_LT(files.restore(t, name, prepared), 0);
+    const DirectShearSpec same = index_preparation_spec(spec, o, true, spec.seed);
+    DirectShearTest u(same);
+    EXPECT_GE(files.restore(u, name, same), 0);
+    EXPECT_EQ(u.world().state.step, 4300);
+    EXPECT_EQ(u.phase_name(), "compact");
+  }
+
+  std::vector<std::string> lines;
+  KeptPreparations going_on(dir.path);
+  const IndexDensities resumed =
+      measure_index_densities(spec, o, [&](const std::string& l) { lines.push_back(l); }, {}, {}, &going_on);
+  ASSERT_FALSE(lines.empty());
+  EXPECT_NE(lines.front().find("going on from step 4300"), std::string::npos) << lines.front();
+  EXPECT_EQ(resumed.dense.front().steps, straight.dense.front().steps);
+  EXPECT_EQ(resumed.e_min, straight.e_min);
+  EXPECT_EQ(resumed.e_max, straight.e_max);
+  EXPECT_EQ(resumed.dense.front().whole_void_ratio, straight.dense.front().whole_void_ratio);
+  EXPECT_FALSE(std::filesystem::exists(going_on.file(name)));
+}
+
+TEST(KeptPreparations, AStoppedTrialGoesOnToTheSameSpecimenAndAFinishedOneIsTakenBack) {
+  const DirectShearSpec spec = testing_support::sphere_spec();
+  const double mu = 0.05;
+  PreparationTrial straight;
+  const auto t0 = trial_preparation(spec, mu, straight);
+
+  test::IoTempDir dir;
+  int asked = 0;
+  KeptPreparations stopping(dir.path, [&] { return ++asked == 20; });
+  PreparationTrial stopped;
+  EXPECT_THROW(trial_preparation(spec, mu, stopped, &stopping), Stopped);
+  const std::filesystem::path file = stopping.file(trial_preparation_name(mu));
+  EXPECT_EQ(file.filename(), "trial_friction_0.05000000.bin");
+  ASSERT_TRUE(std::filesystem::exists(file));
+
+  KeptPreparations going_on(dir.path);
+  PreparationTrial resumed;
+  const auto t1 = trial_preparation(spec, mu, resumed, &going_on);
+  EXPECT_EQ(resumed.steps, straight.steps);
+  EXPECT_EQ(resumed.void_ratio, straight.void_ratio);
+  EXPECT_EQ(t1->world().state.bodies.back().x, t0->world().state.bodies.back().x);
+  ASSERT_TRUE(std::filesystem::exists(file));  // kept at its end
+
+  // Taken back at once: nothing stepped (a stop asked for now would throw).
+  KeptPreparations finished(dir.path, [] { return true; });
+  PreparationTrial again;
+  const auto t2 = trial_preparation(spec, mu, again, &finished);
+  EXPECT_EQ(again.steps, straight.steps);
+  EXPECT_EQ(again.void_ratio, straight.void_ratio);
+  // Another friction does not take it.
+  PreparationTrial other;
+  EXPECT_THROW(trial_preparation(spec, 0.06, other, &finished), Stopped);
+
+  drop_kept_trials(dir.path);
+  EXPECT_FALSE(std::filesystem::exists(file));
+}
