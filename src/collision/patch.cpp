@@ -78,16 +78,16 @@ void gather_planes(const ConvexPolytope& poly, const std::vector<Index>& verts, 
       if (w.mark(*it)) out.push_back(*it);
 }
 
-// Per-thread scratch of add_edges: o's candidate planes as arrays (padded to
-// whole lanes with planes no point is outside of), each vertex's row of
-// distances inside them (o's local units) once it is needed, and each
-// vertex's class: a plane it is outside of, or inside them all.
 // Four doubles at a time (GCC/Clang vector extension: AVX on x86-64-v3),
 // and the result of comparing them (all ones where true).
 using Lanes = double __attribute__((vector_size(32), aligned(8), may_alias));
 using Mask = long long __attribute__((vector_size(32)));
 Lanes lanes(double v) { return Lanes{v, v, v, v}; }
 
+// Per-thread scratch of add_edges: o's candidate planes as arrays (padded to
+// whole lanes with planes no point is outside of), each vertex's row of
+// distances inside them (o's local units) once it is needed, and each
+// vertex's class: a plane it is outside of, or inside them all.
 struct EdgeScratch {
   static constexpr std::size_t kLanes = 4;
   std::vector<double> mx, my, mz, c;  // plane k: distance c[k] - m[k] . x
