@@ -472,14 +472,19 @@ int main(int argc, char** argv) {
       if (done(s)) tabulate(s);
     for (const Sand& s : kSands)
       if (!done(s) && selected(o, s.name) && !g_stop) tabulate(s);
+    // The damping runs done earlier are tabulated whatever --only says, as the sands are.
+    const auto damping_done = [&](double gn, double gt) {
+      return fs::exists(fs::path(o.out) / fmt::format("damping-{:g}-{:g}", gn, gt) / "run.json");
+    };
     if (selected(o, "damping") && !have_beads)
       fmt::print("damping set skipped: it needs the glass beads' finished run (their indices and friction)\n");
-    if (selected(o, "damping") && have_beads) {
+    if ((selected(o, "damping") || damping_done(40, 20)) && have_beads) {
       const fs::path specimen = fs::path(o.out) / "damping-40-20" / "specimen.bin";
       for (const auto& [gn, gt] : {std::pair{40.0, 20.0}, std::pair{20.0, 10.0}, std::pair{80.0, 40.0}}) {
+        if (!selected(o, "damping") && !damping_done(gn, gt)) continue;
         DirectShearSpec spec = beads;
         if (gn != 40.0) {
-          if (!fs::exists(specimen)) {
+          if (!damping_done(gn, gt) && !fs::exists(specimen)) {
             fmt::print("damping ({:g}, {:g}) skipped: it shears the specimen of the (40, 20) run, which has none\n",
                        gn, gt);
             continue;
