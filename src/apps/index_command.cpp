@@ -6,18 +6,26 @@
 #include "core/timer.h"
 #include "io/config.h"
 #include "io/json.h"
+#include "io/kept_preparations.h"
 #include "io/preparation_files.h"
 #include "lab/index_densities.h"
 
 #include <fmt/format.h>
 
+#include <atomic>
+#include <cmath>
+#include <csignal>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <string>
 
 namespace grainlab::apps {
 
 namespace {
+
+std::atomic<int> g_index_stop{0};
+extern "C" void on_index_stop(int sig) { g_index_stop = sig; }
 
 struct IndexOptions {
   std::string config;
@@ -27,6 +35,7 @@ struct IndexOptions {
   std::uint64_t seed = 0;
   int threads = 0;
   std::string json;
+  std::string keep;  // folder that keeps the preparations (--keep)
   IndexDensityOptions measure;
 };
 
@@ -50,11 +59,59 @@ int run_index(const IndexOptions& o) {
              o.measure.box_diameters, o.measure.height_diameters, o.measure.seeds,
              spec.consolidation.normal_stress * 1e-3, o.measure.loose_friction);
   std::fflush(stdout);
+  // --keep: the preparations done (FOLDER/index_densities.json) and the one
+  // under way (FOLDER/index_e_min_seedN.bin, io/kept_preparations.h).
+  namespace fs = std::filesystem;
+  IndexDensities done;
+  std::unique_ptr<KeptPreparations> store;
+  const fs::path record = o.keep.empty() ? fs::path() : fs::path(o.keep) / "index_densities.json";
+  if (!o.keep.empty()) {
+    done = unfinished_index_densities(record, spec);
+    const auto finished = cached_index_densities(record, spec);
+    if (!done.dense.empty() || finished) {
+      const nlohmann::json j = read_json_file(record);
+      const double L = o.measure.box_diameters * spec.grains.d_max, H = o.measure.height_diameters * spec.grains.d_max;
+      bool same = std::abs(j.value("box_length_m", 0.0) - L) <= 1e-9 * L &&
+                  std::abs(j.value("box_height_m", 0.0) - H) <= 1e-9 * H;
+      for (const IndexPreparation& p : done.loose) same = same && p.friction == o.measure.loose_friction;
+      if (!same)
+        input_error("--keep {}: its index_densities.json holds preparations of another box or loose friction "
+                    "(box {:.4g} x {:.4g} m, this measurement {:.4g} x {:.4g} m); give another --keep folder, or "
+                    "remove that file to start again",
+                    o.keep, j.value("box_length_m", 0.0), j.value("box_height_m", 0.0), L, H);
+      if (finished) {
+        fmt::print("{} already holds this measurement: e_min = {:.4f}, e_max = {:.4f} (remove it to measure "
+                   "again)\nfor the run config:\n[specimen]\nown_e_min = {:.4f}\nown_e_max = {:.4f}\n",
+                   record.string(), finished->first, finished->second, finished->first, finished->second);
+        return 0;
+      }
+      fmt::print("  keeping the {} preparation(s) done before, from {}\n", done.dense.size() + done.loose.size(),
+                 record.string());
+    }
+    fs::create_directories(o.keep);
+    store = std::make_unique<KeptPreparations>(o.keep, [] { return g_index_stop != 0; });
+    std::signal(SIGINT, on_index_stop);
+    std::signal(SIGTERM, on_index_stop);
+  }
   Stopwatch clock;
-  const IndexDensities d = measure_index_densities(spec, o.measure, [](const std::string& line) {
-    fmt::print("  {}\n", line);
-    std::fflush(stdout);
-  });
+  IndexDensities d;
+  try {
+    d = measure_index_densities(
+        spec, o.measure,
+        [](const std::string& line) {
+          fmt::print("  {}\n", line);
+          std::fflush(stdout);
+        },
+        std::move(done),
+        [&](const IndexDensities& so_far) {
+          if (!record.empty()) write_index_densities(record, spec, so_far, false);
+        },
+        store.get());
+  } catch (const Stopped& e) {
+    fmt::print("stopped by signal {}: {}; the same command goes on from {}\n", g_index_stop.load(), e.what(), o.keep);
+    return 130;
+  }
+  if (!record.empty()) write_index_densities(record, spec, d);
   fmt::print("e_min = {:.4f} (spread {:.4f} over {} seeds), e_max = {:.4f} (spread {:.4f}); {} grains per "
              "preparation, {:.0f} s\n",
              d.e_min, d.e_min_spread, o.measure.seeds, d.e_max, d.e_max_spread, d.grains, clock.seconds());
@@ -116,6 +173,9 @@ Command add_grains_index_command(CLI::App& grains) {
       ->capture_default_str();
   cmd->add_option("--threads", o->threads, "worker threads; 0 = all cores")->capture_default_str();
   cmd->add_option("--json", o->json, "also write the figures, every preparation, to this JSON file");
+  cmd->add_option("--keep", o->keep,
+                  "keep the preparations in this folder as they run (the one under way every 600 s and on Ctrl-C, "
+                  "those done in its index_densities.json): the same command goes on from them");
   return [cmd, o]() { return *cmd ? run_index(*o) : -1; };
 }
 
