@@ -126,3 +126,24 @@ TEST_F(RunCommand, AScanFolderWithoutGrainsCsvIsRefused) {
 }
 
 }  // namespace
+
+// `grainlab grains index --keep FOLDER` (the mechanism of going on from a
+// kept preparation is tests/io/kept_preparations_test.cpp): a finished
+// measurement is printed again without measuring, and a folder that holds
+// another box is refused with exit 2.
+TEST_F(RunCommand, IndexKeepPrintsAFinishedMeasurementAndRefusesAnotherBox) {
+  const std::string index = "grains index --preset glass-beads --shapes 4 --seeds 1 --height-diameters 6 --keep " +
+                            (dir_ / "keep").string() + " --box-diameters ";
+  const Result first = grainlab(index + "6");
+  ASSERT_EQ(first.exit_code, 0) << first.output;
+  EXPECT_TRUE(fs::exists(dir_ / "keep" / "index_densities.json"));
+  EXPECT_FALSE(fs::exists(dir_ / "keep" / "index_e_min_seed1.bin"));  // done: in the record
+  const auto own_e_min = [](const std::string& out) { return out.substr(out.find("own_e_min"), 20); };
+  const Result again = grainlab(index + "6");
+  ASSERT_EQ(again.exit_code, 0) << again.output;
+  EXPECT_NE(again.output.find("already holds this measurement"), std::string::npos) << again.output;
+  EXPECT_EQ(own_e_min(again.output), own_e_min(first.output));
+  const Result other = grainlab(index + "7");
+  EXPECT_EQ(other.exit_code, 2) << other.output;
+  EXPECT_NE(other.output.find("another box or loose friction"), std::string::npos) << other.output;
+}
