@@ -35,7 +35,8 @@ double judged_relative_density(const DirectShearSpec& spec, double e) {
 std::string trial_preparation_name(double mu) { return fmt::format("trial_friction_{:.8f}", mu); }
 
 std::unique_ptr<DirectShearTest> trial_preparation(const DirectShearSpec& spec, double mu, PreparationTrial& out,
-                                                   PreparationStore* store) {
+                                                   PreparationStore* store,
+                                                   const std::function<void(const std::string&)>& said) {
   DirectShearSpec s = spec;
   s.specimen.deposition_friction = mu;
   Stopwatch clock, since_kept;
@@ -43,7 +44,11 @@ std::unique_ptr<DirectShearTest> trial_preparation(const DirectShearSpec& spec, 
   t->accept_any_density();
   t->world().settings.threads = spec.numerics.threads;
   const std::string name = trial_preparation_name(mu);
-  const double earlier_s = store ? std::max(0.0, store->restore(*t, name, s)) : 0.0;
+  const double kept_s = store ? store->restore(*t, name, s) : -1.0;
+  const double earlier_s = std::max(0.0, kept_s);
+  if (kept_s >= 0 && said)
+    said(fmt::format("  trial at deposition friction {:.4f}: going on from step {} ({} phase), kept after {:.0f} s", mu,
+                     t->world().state.step, t->phase_name(), kept_s));
   bool stepped = false;
   try {
     while (t->phase() < ShearPhase::Consolidate) {
@@ -105,7 +110,7 @@ Preparation prepare_to_target(const DirectShearSpec& spec, const PreparationSear
   std::string why;
   const TrialPreparation run_trial =
       o.trial ? o.trial : [&](const DirectShearSpec& s, double mu, PreparationTrial& out) {
-        return trial_preparation(s, mu, out, o.store);
+        return trial_preparation(s, mu, out, o.store, progress);
       };
   double best_e = NAN;
   for (int k = 0; k < o.max_trials; ++k) {

@@ -79,8 +79,10 @@ using PreparationProgress = std::function<void(const std::string&)>;
 // taken back at once), keeps it every store->keep_interval_s and when it
 // ends, and when the store asks to stop (every 100 steps) keeps it and
 // throws Stopped (core/error.h). A trial that fails is dropped.
+// `said` (may be empty) gets a line when the trial goes on from a kept one.
 std::unique_ptr<DirectShearTest> trial_preparation(const DirectShearSpec& spec, double mu, PreparationTrial& out,
-                                                   PreparationStore* store = nullptr);
+                                                   PreparationStore* store = nullptr,
+                                                   const std::function<void(const std::string&)>& said = {});
 // The name a trial is kept under: "trial_friction_0.02990000".
 std::string trial_preparation_name(double mu);
 

@@ -84,7 +84,10 @@ TEST(KeptPreparations, AStoppedTrialGoesOnToTheSameSpecimenAndAFinishedOneIsTake
 
   KeptPreparations going_on(dir.path);
   PreparationTrial resumed;
-  const auto t1 = trial_preparation(spec, mu, resumed, &going_on);
+  std::vector<std::string> said;
+  const auto t1 = trial_preparation(spec, mu, resumed, &going_on, [&](const std::string& l) { said.push_back(l); });
+  ASSERT_EQ(said.size(), 1u);
+  EXPECT_NE(said.front().find("going on from step 2000"), std::string::npos) << said.front();
   EXPECT_EQ(resumed.steps, straight.steps);
   EXPECT_EQ(resumed.void_ratio, straight.void_ratio);
   EXPECT_EQ(t1->world().state.bodies.back().x, t0->world().state.bodies.back().x);
