@@ -52,6 +52,7 @@
 #include "core/timer.h"
 #include "dynamics/laws/registry.h"
 #include "io/config.h"
+#include "io/kept_preparations.h"
 #include "io/json.h"
 #include "lab/direct_shear.h"
 #include "lab/sand_presets.h"
@@ -191,8 +192,6 @@ double seconds_since_epoch(TimePoint t) {
   return std::chrono::duration<double>(t.time_since_epoch()).count();
 }
 
-// When the run in folder last saved progress that a later sitting reuses:
-// its checkpoint or its own index densities (0 if neither).
 // What a stopped run keeps in its folder: its checkpoint, its index
 // densities, the index preparation and trials (index_e_min_seed7.bin,
 // trial_friction_0.02990000.bin).
@@ -201,13 +200,14 @@ std::vector<fs::path> kept_files(const fs::path& folder) {
   std::error_code ec;
   for (const auto& entry : fs::directory_iterator(folder, ec)) {
     const std::string name = entry.path().filename().string();
-    if (name == "checkpoint.bin" || name == "index_densities.json" ||
-        ((name.starts_with("index_e_m") || name.starts_with("trial_")) && name.ends_with(".bin")))
+    if (name == "checkpoint.bin" || name == "index_densities.json" || is_kept_preparation_file(name))
       kept.push_back(entry.path());
   }
   return kept;
 }
 
+// When the run in folder last saved progress that a later sitting reuses:
+// one of its kept files (0 if none).
 double last_saved(const fs::path& folder) {
   double newest = 0;
   for (const fs::path& kept : kept_files(folder)) {

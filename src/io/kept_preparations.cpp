@@ -38,12 +38,16 @@ std::uint64_t kept_preparation_key(const std::string& name, const DirectShearSpe
   return config_hash(s);
 }
 
+bool is_kept_preparation_file(const std::string& filename, bool trials_only) {
+  if (!filename.ends_with(".bin")) return false;
+  return filename.starts_with("trial_") || (!trials_only && filename.starts_with("index_e_m"));
+}
+
 void drop_kept_trials(const fs::path& folder) {
   std::error_code ec;
   std::vector<fs::path> trials;
   for (const auto& entry : fs::directory_iterator(folder, ec)) {
-    const std::string name = entry.path().filename().string();
-    if (name.starts_with("trial_") && name.ends_with(".bin")) trials.push_back(entry.path());
+    if (is_kept_preparation_file(entry.path().filename().string(), true)) trials.push_back(entry.path());
   }
   for (const fs::path& f : trials) fs::remove(f, ec);
 }

@@ -48,6 +48,10 @@ class KeptPreparations final : public PreparationStore {
 // The key above.
 std::uint64_t kept_preparation_key(const std::string& name, const DirectShearSpec& prepared);
 
+// Whether a file name is that of a kept preparation (index_e_min_seed7.bin,
+// trial_friction_0.02990000.bin); `trials_only`: of a trial.
+bool is_kept_preparation_file(const std::string& filename, bool trials_only = false);
+
 // Removes the kept trials (trial_*.bin) from `folder`.
 void drop_kept_trials(const std::filesystem::path& folder);
 

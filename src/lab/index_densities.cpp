@@ -63,16 +63,12 @@ IndexPreparation prepare_index_specimen(const DirectShearSpec& spec, const Index
   std::int64_t next_line = (w.state.step / 10000 + 1) * 10000;
   while (t.phase() < goal && w.state.step - t.phase_step(t.phase()) < cap) {
     t.advance(100);  // a stop is asked for every 100 steps: 30 s in a bed of angular grains
-    if (store && store->stop_requested()) {
-      store->keep(t, kept, s, earlier_s + clock.seconds());
-      throw Stopped(fmt::format("the {} preparation of seed {} was stopped at step {} and kept (the run goes on "
-                                "from there)",
-                                                name, seed, w.state.step));
-    }
-    if (store && since_kept.seconds() >= store->keep_interval_s) {
-      store->keep(t, kept, s, earlier_s + clock.seconds());
-      since_kept.reset();
-    }
+    if (store)
+      store->keep_if_due(t, kept, s, earlier_s + clock.seconds(), since_kept, [&] {
+        return fmt::format("the {} preparation of seed {} was stopped at step {} and kept (the run goes on from "
+                           "there)",
+                           name, seed, w.state.step);
+      });
     if (!progress || w.state.step < next_line) continue;
     next_line += 10000;
     progress(fmt::format("  {} seed {}: step {}, {} phase, {:.0f} s: {}", name, seed, w.state.step, t.phase_name(),

@@ -54,17 +54,12 @@ std::unique_ptr<DirectShearTest> trial_preparation(const DirectShearSpec& spec, 
     while (t->phase() < ShearPhase::Consolidate) {
       t->advance(100);
       stepped = true;
-      if (!store) continue;
-      if (store->stop_requested()) {
-        store->keep(*t, name, s, earlier_s + clock.seconds());
-        throw Stopped(fmt::format("the trial preparation at deposition friction {:.4f} was stopped at step {} and "
-                                  "kept (the run goes on from there)",
-                                  mu, t->world().state.step));
-      }
-      if (since_kept.seconds() >= store->keep_interval_s) {
-        store->keep(*t, name, s, earlier_s + clock.seconds());
-        since_kept.reset();
-      }
+      if (store)
+        store->keep_if_due(*t, name, s, earlier_s + clock.seconds(), since_kept, [&] {
+          return fmt::format("the trial preparation at deposition friction {:.4f} was stopped at step {} and kept "
+                             "(the run goes on from there)",
+                             mu, t->world().state.step);
+        });
     }
   } catch (const RunError&) {
     if (store) store->drop(name);

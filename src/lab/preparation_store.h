@@ -8,8 +8,10 @@
 // apps keeps them as checkpoint files in the run folder (io/kept_preparations.h).
 #pragma once
 
+#include "core/timer.h"
 #include "lab/direct_shear_spec.h"
 
+#include <functional>
 #include <string>
 
 namespace grainlab {
@@ -35,6 +37,13 @@ class PreparationStore {
   // kept and Stopped (core/error.h) thrown.
   virtual bool stop_requested() const { return false; }
   double keep_interval_s = 600;  // s of wall-clock time between keeps
+
+  // Between batches of a preparation's steps: when a stop is asked for,
+  // keeps it and throws Stopped(stopped()); else keeps it if
+  // keep_interval_s has passed on `since_kept` (then reset). `wall_s` is
+  // its wall seconds in all.
+  void keep_if_due(const DirectShearTest& test, const std::string& name, const DirectShearSpec& prepared,
+                   double wall_s, Stopwatch& since_kept, const std::function<std::string()>& stopped);
 };
 
 }  // namespace grainlab
