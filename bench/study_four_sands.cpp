@@ -5,7 +5,7 @@
 // writes run folders and one comparison report (scripts/study_report.py).
 //
 //   build/study_four_sands [--quick] [--out DIR] [--grainlab PATH] [--threads N]
-//                          [--only sands|damping|SAND,SAND...] [--estimate]
+//                          [--only sands|damping|SAND,SAND...] [--seeds N] [--estimate]
 //
 // Per sand (Table 1 material through lab/sand_presets.h), one `grainlab run`
 // on the config written to DIR/configs/<sand>.toml, which does the whole
@@ -37,6 +37,12 @@
 // the report), not the densities: it targets the lab's indices and skips the
 // own index measurement (see base_spec). --only damping still runs
 // the glass beads' run first (their indices and friction).
+//
+// --seeds N runs each selected sand with N seeds (7, 8, ...: other grain
+// shapes from the same generator, another fill; each run measures its own
+// index void ratios), in DIR/<sand> for seed 7 and DIR/<sand>-seed<S> for
+// the others, so that the report can tell a trend between two sands from
+// the scatter between specimens of one (a box of 1300-1700 grains).
 //
 // Running it again on the same DIR continues it: a run whose run.json is
 // written is done and kept, a run with a checkpoint resumes from it
@@ -90,6 +96,7 @@ struct Options {
   std::string grainlab;  // default: next to this program
   std::string only;
   int threads = 0;
+  int seeds = 1;  // seeds per sand: 7, 8, ...
 };
 
 struct Sand {
@@ -105,6 +112,13 @@ const std::vector<Sand> kSands = {{"glass-beads", "glass-beads", 0.10},
                                   {"angular", "crushed-limestone", 0.20}};
 
 constexpr double kTargetDr = 0.9;
+constexpr std::uint64_t kFirstSeed = 7;
+constexpr int kMaxSeeds = 8;
+
+// The run folder of a sand's seed: the sand's name for the first seed.
+std::string run_name(const Sand& s, std::uint64_t seed) {
+  return seed == kFirstSeed ? std::string(s.name) : fmt::format("{}-seed{}", s.name, seed);
+}
 constexpr double kDrTolerance = 0.05;
 
 DirectShearSpec base_spec(const Options& o, const Sand& s) {
@@ -125,7 +139,7 @@ DirectShearSpec base_spec(const Options& o, const Sand& s) {
   spec.shear.final_strain = o.quick ? 0.6 * s.final_strain : s.final_strain;
   spec.numerics.inertial_number = 9e-4;
   spec.numerics.threads = o.threads;
-  spec.seed = 7;
+  spec.seed = kFirstSeed;
   // Dr 0.9 on the grains' own indices, the deposition friction found by the
   // run's bisection (the run measures the indices first).
   spec.specimen.indices = "own";
@@ -350,9 +364,9 @@ void estimate(const Options& o) {
   Options full = o;
   full.quick = false;
   double total = 0;
-  fmt::print("Estimate of the full study ({} threads): each sand's deposition rate from 2000 steps; a packed\n"
-             "specimen of faceted grains steps {:g} times slower (see the source)\n",
-             resolve_threads(o.threads), kPackedSlowdown);
+  fmt::print("Estimate of the full study ({} threads, {} seed(s) a sand): each sand's deposition rate from 2000\n"
+             "steps; a packed specimen of faceted grains steps {:g} times slower (see the source)\n",
+             resolve_threads(o.threads), o.seeds, kPackedSlowdown);
   for (const Sand& s : kSands) {
     DirectShearSpec spec = base_spec(full, s);
     spec.specimen.indices = "lab";  // the rate only: no index measurement, no search
@@ -370,8 +384,9 @@ void estimate(const Options& o) {
     // trials of about 11,000 (mostly deposition), consolidation about 10,000
     // (packed), then the shear.
     const double loose_steps = 6.1e3 + 3 * 1.1e4, packed_steps = 2.35e4 + 1e4;
-    const int runs = spheres ? 4 : 1;  // + the damping set
-    const double seconds = loose_steps / rate + (packed_steps + runs * shear_steps) / packed_rate;
+    const int runs = o.seeds + (spheres ? 3 : 0);  // + the damping set
+    const double seconds =
+        o.seeds * (loose_steps / rate + packed_steps / packed_rate) + runs * shear_steps / packed_rate;
     total += seconds;
     fmt::print("  {:<12} {:>6} grains  {:>7.0f} steps/s deposition, {:>7.0f} packed  shear {:.3g} steps x {}  ~{:.1f} h\n",
                s.name, t.world().model.bodies.size(), rate, packed_rate, shear_steps, runs, seconds / 3600);
@@ -408,12 +423,17 @@ int main(int argc, char** argv) {
     else if (a == "--grainlab" && has_value) o.grainlab = argv[++i];
     else if (a == "--threads" && has_value) o.threads = std::stoi(argv[++i]);
     else if (a == "--only" && has_value) o.only = argv[++i];
+    else if (a == "--seeds" && has_value) o.seeds = std::atoi(argv[++i]);
     else {
       fmt::print(stderr, "usage: study_four_sands [--quick] [--out DIR] [--grainlab PATH] [--threads N] "
-                         "[--only sands|damping|SAND,SAND...] [--estimate]\n"
+                         "[--only sands|damping|SAND,SAND...] [--seeds N] [--estimate]\n"
                          "  SAND: {}\n", run_names);
       return 2;
     }
+  }
+  if (o.seeds < 1 || o.seeds > kMaxSeeds) {
+    fmt::print(stderr, "study_four_sands: --seeds {}: give 1 to {} seeds per sand\n", o.seeds, kMaxSeeds);
+    return 2;
   }
   if (!o.only.empty() && o.only != "sands" && o.only != "damping") {
     std::string rest = o.only + ",";
@@ -443,45 +463,48 @@ int main(int argc, char** argv) {
     Stopwatch all;
     DirectShearSpec beads;
     bool have_beads = false;
-    const auto done = [&](const Sand& s) { return fs::exists(fs::path(o.out) / s.name / "run.json"); };
+    const auto done = [&](const Sand& s, std::uint64_t seed) {
+      return fs::exists(fs::path(o.out) / run_name(s, seed) / "run.json");
+    };
     const auto order = [&](const nlohmann::json& j) {
       for (std::size_t k = 0; k < kSands.size(); ++k)
-        if (j.at("name") == kSands[k].name) return k;
-      return kSands.size();
+        if (j.at("name") == kSands[k].name) return std::pair{k, j.value("seed", kFirstSeed)};
+      return std::pair{kSands.size(), kFirstSeed};
     };
-    const auto tabulate = [&](const Sand& s) {
+    const auto tabulate = [&](const Sand& s, std::uint64_t seed) {
       DirectShearSpec spec = base_spec(o, s);
-      nlohmann::json j = {{"name", s.name}, {"sand_preset", s.preset}, {"grain_class", spec.grains.preset}};
-      fmt::print("{}: {} grains of {} faces, box {:.2f} x {:.2f} x {:.2f} mm\n", s.name, spec.grains.preset,
-                 spec.grains.faces, spec.box.length * 1e3, spec.box.width * 1e3, spec.box.height * 1e3);
+      spec.seed = seed;
+      const std::string name = run_name(s, seed);
+      nlohmann::json j = {{"name", s.name}, {"seed", seed}, {"sand_preset", s.preset},
+                          {"grain_class", spec.grains.preset}};
+      fmt::print("{}: {} grains of {} faces, seed {}, box {:.2f} x {:.2f} x {:.2f} mm\n", name, spec.grains.preset,
+                 spec.grains.faces, seed, spec.box.length * 1e3, spec.box.width * 1e3, spec.box.height * 1e3);
       // One sand's failure leaves the others to run; the damping set needs
       // the beads' run (their indices and friction), so it runs with it.
-      if (shear_run(o, spec, s.name, j)) copy_preparation(o, s.name, spec, j);
+      if (shear_run(o, spec, name, j)) copy_preparation(o, name, spec, j);
       else if (j.contains("stopped")) return;  // by a signal: the run continues in a later sitting
       else j["error"] = fmt::format("grainlab run failed (exit status {})", j["run_exit_status"].get<int>());
-      if (std::string(s.name) == "glass-beads" && !j.contains("error") && j.contains("e_min"))
+      if (std::string(s.name) == "glass-beads" && seed == kFirstSeed && !j.contains("error") && j.contains("e_min"))
         beads = spec, have_beads = true;
       study["sands"].push_back(j);
       std::stable_sort(study["sands"].begin(), study["sands"].end(),
                        [&](const nlohmann::json& x, const nlohmann::json& y) { return order(x) < order(y); });
       save(o, study);
     };
-    // The runs done in earlier sittings first, selected or not, so that
-    // study.json has them whatever becomes of this sitting; then the others.
-    for (const Sand& s : kSands)
-      if (done(s)) tabulate(s);
-    for (const Sand& s : kSands)
-      if (!done(s) && selected(o, s.name) && !g_stop) tabulate(s);
-    // The damping runs done earlier are tabulated whatever --only says, as the sands are.
+    // The damping runs done earlier are tabulated whatever --only says, as
+    // the sands are, and before the sands still to run (hours), so that
+    // study.json has them whatever becomes of this sitting.
     const auto damping_done = [&](double gn, double gt) {
       return fs::exists(fs::path(o.out) / fmt::format("damping-{:g}-{:g}", gn, gt) / "run.json");
     };
-    if (selected(o, "damping") && !have_beads)
-      fmt::print("damping set skipped: it needs the glass beads' finished run (their indices and friction)\n");
-    if ((selected(o, "damping") || damping_done(40, 20)) && have_beads) {
+    const auto damping_set = [&](bool run_pending) {
+      study["damping"] = nlohmann::json::array();
+      if (run_pending && selected(o, "damping") && !have_beads)
+        fmt::print("damping set skipped: it needs the glass beads' finished run (their indices and friction)\n");
+      if (!(selected(o, "damping") || damping_done(40, 20)) || !have_beads) return;
       const fs::path specimen = fs::path(o.out) / "damping-40-20" / "specimen.bin";
       for (const auto& [gn, gt] : {std::pair{40.0, 20.0}, std::pair{20.0, 10.0}, std::pair{80.0, 40.0}}) {
-        if (!selected(o, "damping") && !damping_done(gn, gt)) continue;
+        if (!damping_done(gn, gt) && (!run_pending || !selected(o, "damping"))) continue;
         DirectShearSpec spec = beads;
         if (gn != 40.0) {
           if (!damping_done(gn, gt) && !fs::exists(specimen)) {
@@ -504,7 +527,17 @@ int main(int argc, char** argv) {
         study["damping"].push_back(j);
         save(o, study);
       }
-    }
+    };
+    // The runs done in earlier sittings first, selected or not, so that
+    // study.json has them whatever becomes of this sitting; then the others.
+    for (const Sand& s : kSands)
+      for (int k = 0; k < kMaxSeeds; ++k)
+        if (done(s, kFirstSeed + k)) tabulate(s, kFirstSeed + k);
+    damping_set(false);
+    for (const Sand& s : kSands)
+      for (int k = 0; k < o.seeds; ++k)
+        if (!done(s, kFirstSeed + k) && selected(o, s.name) && !g_stop) tabulate(s, kFirstSeed + k);
+    damping_set(true);
     study["sitting_wall_s"] = all.seconds();  // this sitting; each run's own is its run_wall_s
     save(o, study);
     if (g_stop) return 130;  // study.json has every run done so far

@@ -19,15 +19,22 @@ Figures (He, Zheng & Schaefer 2021):
               of the peak stress ratio and of the final cap displacement
   Fig. 19     angular grains to 20 % strain (Appendix 3), with the change of F/N and
               of the cap displacement between 15 and 20 % strain
-and a table per sand: roundness, e_min, e_max, e, Dr, phi_p, psi_p, strain at
+and a table per run: roundness, e_min, e_max, e, Dr, phi_p, psi_p, strain at
 peak, mean rotation, final CN, Psi_p, wall time. Each of the paper's trends is
 stated as holding or not, with the numbers.
+
+A sand run with several seeds (study_four_sands --seeds N: other grain shapes
+of the same class, another fill) is one point per run in the figures and a
+row per run plus a row of means in the table; a trend is judged on the
+sands' means, and where two sands' ranges over their seeds overlap it says
+so: the trend between them is not resolved by the specimens at hand.
 """
 
 import argparse
 import html
 import json
 import sys
+from collections import OrderedDict
 from pathlib import Path
 
 import numpy as np
@@ -39,6 +46,7 @@ import report as rp  # noqa: E402  (scripts/report.py: Run, figures, page)
 plt = rp.plt
 STUDY_PNGS = rp.COMPARISON_PNGS + ["micro_vs_roundness.png", "damping.png", "angular_20.png"]
 AT_STRAIN = 0.10  # the comparisons' strain (the paper's final strain; a shorter run: its end)
+FIRST_SEED = 7  # study_four_sands' first seed (a run folder named after the sand alone)
 
 
 def value_at(run, column, strain=AT_STRAIN):
@@ -55,8 +63,9 @@ class Sand:
     def __init__(self, study_dir, entry):
         self.entry = entry
         self.run = rp.Run(study_dir / entry["run_folder"])
-        self.run.label = entry["name"]
         self.name = entry["name"]
+        self.seed = int(entry.get("seed", FIRST_SEED))
+        self.run.label = self.name if self.seed == FIRST_SEED else f"{self.name} seed {self.seed}"
         self.R = rp.num(self.run.info.get("mean_roundness"))
         self.phi_p, self.strain_at_peak = self.run.peak_friction()
         self.psi_p, _ = self.run.peak_dilation()
@@ -70,31 +79,67 @@ class Sand:
         self.wall = (rp.num(entry.get("preparation_wall_s")) or 0) + (rp.num(entry.get("run_wall_s")) or 0)
 
 
-def trend(sands, attr, falling, what):
-    """'holds' or 'does not hold' for a strict trend of attr with roundness, with the numbers."""
-    have = sorted([s for s in sands if s.R is not None and getattr(s, attr) is not None], key=lambda s: s.R)
-    vals = [getattr(s, attr) for s in have]
+class Group:
+    """The runs of one sand (one per seed): means and ranges of what the trends compare."""
+
+    ATTRS = ("R", "phi_p", "psi_p", "psi_fabric", "rotation", "cn")
+
+    def __init__(self, name, runs):
+        self.name, self.runs = name, runs
+        for attr in self.ATTRS:
+            v = [getattr(r, attr) for r in runs if getattr(r, attr) is not None]
+            setattr(self, attr, float(np.mean(v)) if v else None)
+            setattr(self, attr + "_range", (min(v), max(v)) if v else None)
+
+
+def groups_of(sands):
+    by_name = OrderedDict()
+    for s in sands:
+        by_name.setdefault(s.name, []).append(s)
+    return [Group(name, runs) for name, runs in by_name.items()]
+
+
+def trend(groups, attr, falling, what):
+    """'holds' or 'does not hold' for a strict trend of the sands' means of attr with roundness,
+    with the numbers; with several seeds, whether neighbouring sands' ranges overlap."""
+    have = sorted([g for g in groups if g.R is not None and getattr(g, attr) is not None], key=lambda g: g.R)
+    vals = [getattr(g, attr) for g in have]
     ok = len(vals) >= 2 and all((b < a) if falling else (b > a) for a, b in zip(vals, vals[1:]))
-    numbers = ", ".join(f"{s.name} (R {s.R:.2f}) {getattr(s, attr):.3g}" for s in have)
-    verdict = "holds" if ok else "DOES NOT HOLD" if len(vals) >= 2 else "cannot tell (fewer than two runs)"
-    return f"{what} {'falls' if falling else 'rises'} strictly with roundness: {verdict} ({numbers})", ok
+
+    def number(g):
+        lo, hi = getattr(g, attr + "_range")
+        seeds = f" [{lo:.3g} to {hi:.3g}, {len(g.runs)} seeds]" if len(g.runs) > 1 else ""
+        return f"{g.name} (R {g.R:.2f}) {getattr(g, attr):.3g}{seeds}"
+
+    numbers = ", ".join(number(g) for g in have)
+    verdict = "holds" if ok else "DOES NOT HOLD" if len(vals) >= 2 else "cannot tell (fewer than two sands)"
+    overlaps = [f"{a.name}/{b.name}" for a, b in zip(have, have[1:])
+                if (len(a.runs) > 1 or len(b.runs) > 1)
+                and min(getattr(a, attr + "_range")[1], getattr(b, attr + "_range")[1])
+                >= max(getattr(a, attr + "_range")[0], getattr(b, attr + "_range")[0])]
+    unresolved = f"; the seeds' ranges overlap for {', '.join(overlaps)}: not resolved there" if overlaps else ""
+    mean = " (means over seeds)" if any(len(g.runs) > 1 for g in have) else ""
+    return (f"{what} {'falls' if falling else 'rises'} strictly with roundness{mean}: {verdict}{unresolved} "
+            f"({numbers})", ok)
 
 
-def fig_micro(sands, out_dir):
+def fig_micro(sands, groups, out_dir):
     f = rp.Figure("Mean rotation, coordination number and peak fabric factor against roundness", "Figs. 13b, 14b, 16b",
                   "Left: mean grain rotation at 10 % strain (series.csv rotation_mean_deg); middle: coordination "
                   "number at 10 % strain; right: the largest fabric factor &Psi; during shear (run.json "
-                  "peaks.fabric_psi); each against the mean Wadell roundness of the sand's grains.")
+                  "peaks.fabric_psi); each against the mean Wadell roundness of the sand's grains. With several "
+                  "seeds a sand, the points are the runs and the line joins the sands' means.")
     fig, axes = plt.subplots(1, 3, figsize=(13.0, 4.0))
     for ax, attr, ylabel, title in ((axes[0], "rotation", "mean rotation at 10 % (deg)", "(13b) rotation"),
                                     (axes[1], "cn", "coordination number at 10 % (–)", "(14b) final CN"),
                                     (axes[2], "psi_fabric", "peak fabric factor $\\Psi_p$ (–)", "(16b) $\\Psi_p$")):
-        pts = [(s.R, getattr(s, attr), s.name) for s in sands if s.R is not None and getattr(s, attr) is not None]
+        pts = [(s.R, getattr(s, attr), s.run.label) for s in sands if s.R is not None and getattr(s, attr) is not None]
         if not pts:
             f.missing(f"{attr} of every sand")
             continue
-        pts.sort()
-        ax.plot([p[0] for p in pts], [p[1] for p in pts], "o-", color=rp.ALL_COLOR, ms=7)
+        means = sorted((g.R, getattr(g, attr)) for g in groups if g.R is not None and getattr(g, attr) is not None)
+        ax.plot([m[0] for m in means], [m[1] for m in means], "-", color=rp.ALL_COLOR)
+        ax.plot([p[0] for p in pts], [p[1] for p in pts], "o", color=rp.ALL_COLOR, ms=7)
         for R, v, name in pts:
             ax.annotate(name, (R, v), xytext=(5, 4), textcoords="offset points", fontsize=8)
         ax.set_xlabel("mean grain roundness R (–)")
@@ -183,11 +228,12 @@ def main(argv=None):
         return 1
     rp.prepare_out(out_dir, STUDY_PNGS)
 
+    groups = groups_of(sands)
     checks = [f"no finished run for: {', '.join(unfinished)}"] if unfinished else []
     for attr, falling, what in (("phi_p", True, "peak friction angle"), ("psi_p", True, "peak dilation angle"),
                                 ("psi_fabric", True, "peak fabric factor Psi_p"),
                                 ("rotation", False, "mean rotation at 10 %"), ("cn", False, "coordination number at 10 %")):
-        checks.append(trend(sands, attr, falling, what)[0])
+        checks.append(trend(groups, attr, falling, what)[0])
 
     damping_notes = []
     if damping:
@@ -199,7 +245,7 @@ def main(argv=None):
         damping_notes.append(f"final cap displacement (mm): {', '.join(f'{1e3 * v:.4f}' for v in finals if v is not None)}; "
                              f"spread {sf:.2f} % of the mean ({'within' if sf is not None and sf <= 5 else 'ABOVE'} the paper's 5 %)")
         checks += damping_notes
-    angular = next((s for s in sands if s.name == "angular"), None)
+    angular = next((s for s in sands if s.name == "angular" and s.seed == FIRST_SEED), None)
     angular_notes = []
     if angular is not None and float(angular.run.series["shear_strain"][-1]) >= 0.199:
         r = angular.run
@@ -215,26 +261,32 @@ def main(argv=None):
         checks += angular_notes
 
     figs = [rp.fig_overlay([s.run for s in sands], out_dir), rp.fig_peaks_vs_roundness([s.run for s in sands], out_dir),
-            fig_micro(sands, out_dir), fig_damping(damping, out_dir, damping_notes),
+            fig_micro(sands, groups, out_dir), fig_damping(damping, out_dir, damping_notes),
             fig_angular(angular, out_dir, angular_notes)]
 
     head = ["sand", "grain class", "roundness R", "e<sub>min</sub>", "e<sub>max</sub>", "e", "D<sub>r</sub> (%)",
             "&phi;<sub>p</sub> (deg)", "&psi;<sub>p</sub> (deg)", "&epsilon;<sub>s</sub> at &phi;<sub>p</sub> (%)",
             "mean rotation at 10 % (deg)", "CN at 10 %", "&Psi;<sub>p</sub>", "wall time (h)"]
     rows = []
-    for s in sands:
-        rows.append([rp.esc(s.name), rp.esc(s.run.preset), rp.fmt(s.R, ".3f"), rp.fmt(s.entry.get("e_min"), ".4f"),
-                     rp.fmt(s.entry.get("e_max"), ".4f"), rp.fmt(s.e, ".4f"),
-                     rp.fmt(None if s.dr is None else 100 * s.dr, ".1f"), rp.fmt(s.phi_p, ".2f"), rp.fmt(s.psi_p, ".2f"),
-                     rp.fmt(None if s.strain_at_peak is None else 100 * s.strain_at_peak, ".2f"),
-                     rp.fmt(s.rotation, ".2f"), rp.fmt(s.cn, ".3f"), rp.fmt(s.psi_fabric, ".3f"),
-                     rp.fmt(s.wall / 3600, ".2f")])
+    for g in groups:
+        for s in g.runs:
+            rows.append([rp.esc(s.run.label), rp.esc(s.run.preset), rp.fmt(s.R, ".3f"), rp.fmt(s.entry.get("e_min"), ".4f"),
+                         rp.fmt(s.entry.get("e_max"), ".4f"), rp.fmt(s.e, ".4f"),
+                         rp.fmt(None if s.dr is None else 100 * s.dr, ".1f"), rp.fmt(s.phi_p, ".2f"),
+                         rp.fmt(s.psi_p, ".2f"),
+                         rp.fmt(None if s.strain_at_peak is None else 100 * s.strain_at_peak, ".2f"),
+                         rp.fmt(s.rotation, ".2f"), rp.fmt(s.cn, ".3f"), rp.fmt(s.psi_fabric, ".3f"),
+                         rp.fmt(s.wall / 3600, ".2f")])
+        if len(g.runs) > 1:
+            rows.append([f"<b>{rp.esc(g.name)}: mean of {len(g.runs)} seeds</b>", "", rp.fmt(g.R, ".3f"), "", "", "", "",
+                         rp.fmt(g.phi_p, ".2f"), rp.fmt(g.psi_p, ".2f"), "", rp.fmt(g.rotation, ".2f"),
+                         rp.fmt(g.cn, ".3f"), rp.fmt(g.psi_fabric, ".3f"), ""])
     th = "".join(f"<th>{h}</th>" for h in head)
     body = "\n".join("<tr>" + "".join(f"<td>{c}</td>" for c in row) + "</tr>" for row in rows)
-    table = (f'<table class="grid"><caption>Per sand (e<sub>min</sub>, e<sub>max</sub>: the sand\'s own index void '
+    table = (f'<table class="grid"><caption>Per run (e<sub>min</sub>, e<sub>max</sub>: the sand\'s own index void '
              f'ratios measured by the study; D<sub>r</sub> on them)</caption>\n<tr>{th}</tr>\n{body}\n</table>')
     checks_html = "<ul>" + "".join(f"<li>{html.escape(c)}</li>" for c in checks) + "</ul>"
-    subtitle = (f"{len(sands)} sands{' (QUICK mode: tiny box, few faces; not the study)' if study.get('quick') else ''}, "
+    subtitle = (f"{len(groups)} sands, {len(sands)} runs{' (QUICK mode: tiny box, few faces; not the study)' if study.get('quick') else ''}, "
                 f"target D<sub>r</sub> {study.get('target_relative_density')}, {study.get('threads')} threads.")
     blocks = ["<h2>Table</h2>", table, "<h2>The paper's trends, measured</h2>", checks_html, "<h2>Figures</h2>"]
     blocks += [rp.figure_html(f) for f in figs]

@@ -256,7 +256,7 @@ pass "refuses a triaxial + direct shear comparison: $msg"
 # The four-sand study report (scripts/study_report.py) on fabricated runs: a
 # study.json naming four sand runs and three damping runs.
 mkdir -p "$tmp/study"
-for k in glass-beads:rounded:3 rounded:rounded:4 sub-angular:sub-angular:5 angular:angular:6 \
+for k in glass-beads:rounded:3 rounded:rounded:4 rounded-seed8:rounded:11 sub-angular:sub-angular:5 angular:angular:6 \
          damping-20-10:glass-beads:7 damping-40-20:glass-beads:8 damping-80-40:glass-beads:9; do
   IFS=: read -r name preset seed <<<"$k"
   "$PY" "$here/make_fake_run.py" "$tmp/study/$name" --preset "$preset" --seed "$seed" >/dev/null
@@ -265,6 +265,7 @@ cat > "$tmp/study/study.json" <<'JSON'
 {"quick": true, "threads": 2, "target_relative_density": 0.9,
  "sands": [{"name": "glass-beads", "run_folder": "glass-beads", "e_min": 0.70, "e_max": 0.80, "run_wall_s": 10},
            {"name": "rounded", "run_folder": "rounded", "e_min": 0.60, "e_max": 0.75, "run_wall_s": 10},
+           {"name": "rounded", "seed": 8, "run_folder": "rounded-seed8", "e_min": 0.61, "e_max": 0.76, "run_wall_s": 10},
            {"name": "sub-angular", "run_folder": "sub-angular", "e_min": 0.55, "e_max": 0.72, "run_wall_s": 10},
            {"name": "angular", "run_folder": "angular", "e_min": 0.50, "e_max": 0.70, "run_wall_s": 10}],
  "damping": [{"gamma_n": 20, "gamma_t": 10, "run_folder": "damping-20-10"},
@@ -276,6 +277,10 @@ check_report "$tmp/study/report" stress_strain_overlay.png peaks_vs_roundness.pn
 grep -q "e<sub>min</sub>" "$tmp/study/report/index.html" || fail "the study table lacks e_min"
 grep -q "peak friction angle falls strictly with roundness" <<<"$out" || fail "no trend line for phi_p: $out"
 grep -q "peak F/N: .*spread" <<<"$out" || fail "no damping spread: $out"
+grep -q "peak friction angle falls strictly with roundness (means over seeds): .*rounded (R [0-9.]*) [0-9.]* \[[0-9.]* to [0-9.]*, 2 seeds\]" <<<"$out" \
+  || fail "the trend does not give the rounded grains' mean and range over their two seeds: $out"
+grep -q "rounded seed 8" "$tmp/study/report/index.html" || fail "the study table lacks the second seed's row"
+grep -q "rounded: mean of 2 seeds" "$tmp/study/report/index.html" || fail "the study table lacks the rounded mean row"
 pass "study_report.py writes the study page with its figures, table and trends"
 
 echo "all report tests passed"
