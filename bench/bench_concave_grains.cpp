@@ -11,7 +11,9 @@
 // 2. Per touching pair (two grains of one convexity, random orientations,
 //    brought together along a random direction until the pieces touch, then
 //    pressed 0.5 % of the radius): narrowphase time per call, one thread;
-//    the hull pair keeps its warm cache as in a run, the pieces are cold.
+//    the hull pair keeps its warm cache as in a run; the pieces both cold
+//    (each piece pair from scratch, as before session 17) and with their
+//    piece pairs' caches kept as in a run (CandidatePair::pieces).
 // 3. A seam: a sphere pressed 10 um into the flat underside of a U-shaped
 //    grain, moved across the seam where two pieces meet; the force over the
 //    hull's (exact on that face). Two pieces each push with the full depth
@@ -43,7 +45,7 @@ double median(std::vector<double> v) {
 }
 
 struct PairCost {
-  double hull_us = 0, pieces_us = 0, pieces_touching = 0;
+  double hull_us = 0, pieces_us = 0, kept_us = 0, pieces_touching = 0;
 };
 
 // Two grains of `mesh_a`, `mesh_b` in both representations; P touching pairs timed.
@@ -57,7 +59,7 @@ PairCost time_pairs(const TriMesh& mesh_a, const TriMesh& mesh_b, int pairs, int
   const Index ca = w.add_body(cc_a, 0, 1.0, Vec3::Zero()), cb = w.add_body(cc_b, 0, 1.0, Vec3::Zero());
   const double reach = w.model.shapes[cc_a].bounding_radius + w.model.shapes[cc_b].bounding_radius;
   const double press = 0.005 * w.model.shapes[cc_a].equivalent_radius;
-  std::vector<double> hull_t, piece_t;
+  std::vector<double> hull_t, piece_t, kept_t;
   double touching = 0;
   SubContact out[kMaxSubContacts];
   for (int p = 0; p < pairs; ++p) {
@@ -85,8 +87,14 @@ PairCost time_pairs(const TriMesh& mesh_a, const TriMesh& mesh_b, int pairs, int
     for (int k = 0; k < repeat; ++k) n = collide_shapes(w.posed_body(ca), w.posed_body(cb), piece_cache, out);
     piece_t.push_back(t2.seconds() / repeat);
     touching += n;
+    std::vector<PairCache> pieces(static_cast<std::size_t>(piece_cache_count(w.posed_body(ca), w.posed_body(cb))));
+    PairCache kept;
+    collide_shapes(w.posed_body(ca), w.posed_body(cb), kept, out, pieces.data());  // warm them
+    Stopwatch t3;
+    for (int k = 0; k < repeat; ++k) collide_shapes(w.posed_body(ca), w.posed_body(cb), kept, out, pieces.data());
+    kept_t.push_back(t3.seconds() / repeat);
   }
-  return {1e6 * median(hull_t), 1e6 * median(piece_t), touching / pairs};
+  return {1e6 * median(hull_t), 1e6 * median(piece_t), 1e6 * median(kept_t), touching / pairs};
 }
 
 // A U open towards +y, 6 x 3 x 2 mm, bars 1 mm thick.
@@ -137,9 +145,9 @@ int main(int argc, char** argv) {
   fmt::print("concave grains: convex pieces against the convex hull (sub-angular preset; medians over {} seeds, "
              "{} touching pairs)\n\n",
              seeds, pairs);
-  fmt::print("{:>5} {:>9} | {:>8} {:>6} {:>11} {:>13} {:>9} {:>11} | {:>9} {:>10} {:>8}\n", "faces", "convexity",
-             "decomp s", "pieces", "hull fill %", "pieces fill %", "hull KB", "pieces KB", "hull us", "pieces us",
-             "touching");
+  fmt::print("{:>5} {:>9} | {:>8} {:>6} {:>11} {:>13} {:>9} {:>11} | {:>9} {:>10} {:>10} {:>8}\n", "faces",
+             "convexity", "decomp s", "pieces", "hull fill %", "pieces fill %", "hull KB", "pieces KB", "hull us",
+             "cold us", "kept us", "touching");
   for (int faces : faces_list)
     for (double c : {1.0, 0.95, 0.9, 0.85, 0.8}) {
       std::vector<double> secs, pieces, hull_fill, piece_fill, hull_kb, piece_kb;
@@ -166,9 +174,11 @@ int main(int argc, char** argv) {
       }
       Rng rng(7);
       const PairCost cost = time_pairs(meshes[0], meshes[seeds > 1 ? 1 : 0], pairs, repeat, rng);
-      fmt::print("{:>5} {:>9.2f} | {:>8.2f} {:>6.0f} {:>11.1f} {:>13.1f} {:>9.1f} {:>11.1f} | {:>9.2f} {:>10.2f} {:>8.2f}\n",
-                 faces, c, median(secs), median(pieces), median(hull_fill), median(piece_fill), median(hull_kb),
-                 median(piece_kb), cost.hull_us, cost.pieces_us, cost.pieces_touching);
+      fmt::print(
+          "{:>5} {:>9.2f} | {:>8.2f} {:>6.0f} {:>11.1f} {:>13.1f} {:>9.1f} {:>11.1f} | {:>9.2f} {:>10.2f} {:>10.2f} "
+          "{:>8.2f}\n",
+          faces, c, median(secs), median(pieces), median(hull_fill), median(piece_fill), median(hull_kb),
+          median(piece_kb), cost.hull_us, cost.pieces_us, cost.kept_us, cost.pieces_touching);
     }
   fmt::print("\nseams: a sphere (r 0.5 mm) pressed 10 um into the flat underside of a U grain (6 x 3 x 2 mm, "
              "{} pieces), force as pieces / as hull, at x from -2.9 to 2.9 mm every 0.01 mm:\n",

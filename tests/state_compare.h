@@ -8,8 +8,9 @@
 
 namespace grainlab::testing_support {
 
-// True if bodies, walls, the candidate pairs with their warm-start caches and
-// the contacts with their tangential springs are identical bit for bit.
+// True if bodies, walls, the candidate pairs with their warm-start caches
+// (and their piece pairs'), and the contacts with their tangential springs
+// are identical bit for bit.
 inline bool same_state_bits(const State& a, const State& b) {
   const auto eq = [](const auto& x, const auto& y) { return std::memcmp(x.data(), y.data(), sizeof(x)) == 0; };
   if (a.step != b.step || a.bodies.size() != b.bodies.size() || a.walls.size() != b.walls.size() ||
@@ -22,14 +23,23 @@ inline bool same_state_bits(const State& a, const State& b) {
   }
   for (std::size_t k = 0; k < a.walls.size(); ++k)
     if (!eq(a.walls[k].x, b.walls[k].x) || !eq(a.walls[k].v, b.walls[k].v)) return false;
+  const auto same_cache = [&](const PairCache& p, const PairCache& q) {
+    return eq(p.dir, q.dir) && p.hint_a == q.hint_a && p.hint_b == q.hint_b && p.warm == q.warm &&
+           p.simplex.n == q.simplex.n && std::memcmp(p.simplex.a, q.simplex.a, sizeof(p.simplex.a)) == 0 &&
+           std::memcmp(p.simplex.b, q.simplex.b, sizeof(p.simplex.b)) == 0;
+  };
   for (const auto* list : {&a.pairs, &a.wall_pairs}) {
     const auto& other = list == &a.pairs ? b.pairs : b.wall_pairs;
-    for (std::size_t k = 0; k < list->size(); ++k) {
-      const PairCache &p = (*list)[k].cache, &q = other[k].cache;
-      if ((*list)[k].key() != other[k].key() || !eq(p.dir, q.dir) || p.hint_a != q.hint_a ||
-          p.hint_b != q.hint_b || p.warm != q.warm)
+    for (std::size_t k = 0; k < list->size(); ++k)
+      if ((*list)[k].key() != other[k].key() || (*list)[k].pieces != other[k].pieces ||
+          !same_cache((*list)[k].cache, other[k].cache))
         return false;
-    }
+  }
+  for (const auto* pool : {&a.piece_caches, &a.wall_piece_caches}) {
+    const auto& other = pool == &a.piece_caches ? b.piece_caches : b.wall_piece_caches;
+    if (pool->size() != other.size()) return false;
+    for (std::size_t k = 0; k < pool->size(); ++k)
+      if (!same_cache((*pool)[k], other[k])) return false;
   }
   for (const auto* list : {&a.contacts, &a.wall_contacts}) {
     const auto& other = list == &a.contacts ? b.contacts : b.wall_contacts;

@@ -56,15 +56,35 @@ constexpr Table kTable = make_table();
 
 bool has_pair_routine(ShapeKind a, ShapeKind b) { return kTable[idx(a)][idx(b)].fn != nullptr; }
 
-int collide_shapes(const PosedShape& a, const PosedShape& b, PairCache& cache, SubContact* out) {
+namespace {
+
+// The cache of the pair taken the other way round (b to a).
+PairCache flipped(const PairCache& c) { return {-c.dir, c.hint_b, c.hint_a, c.warm, c.simplex.swapped()}; }
+
+}  // namespace
+
+int piece_cache_count(const PosedShape& a, const PosedShape& b) {
+  const auto pieces = [](const PosedShape& s) {
+    return s.kind == ShapeKind::Compound ? static_cast<int>(s.compound->pieces.size()) : 1;
+  };
+  return a.kind == ShapeKind::Compound || b.kind == ShapeKind::Compound ? pieces(a) * pieces(b) : 0;
+}
+
+int collide_shapes(const PosedShape& a, const PosedShape& b, PairCache& cache, SubContact* out, PairCache* pieces) {
   const Entry& e = kTable[idx(a.kind)][idx(b.kind)];
   if (!e.fn) [[unlikely]]
     throw std::logic_error("no narrowphase routine for shape kinds " + std::to_string(idx(a.kind)) + " and " +
                            std::to_string(idx(b.kind)));
-  if (!e.flip) return e.fn(a, b, cache, out);
-  PairCache flipped{-cache.dir, cache.hint_b, cache.hint_a, cache.warm, cache.simplex.swapped()};
-  const int n = e.fn(b, a, flipped, out);
-  cache = {-flipped.dir, flipped.hint_b, flipped.hint_a, flipped.warm, flipped.simplex.swapped()};
+  if (!e.flip) return e.fn(a, b, cache, pieces, out);
+  // Flipped: a convex shape against a compound's pieces (at most
+  // kMaxCompoundPieces piece caches, each flipped like the pair's).
+  PairCache flipped_pieces[kMaxCompoundPieces];
+  const int np = pieces ? piece_cache_count(a, b) : 0;
+  for (int k = 0; k < np; ++k) flipped_pieces[k] = flipped(pieces[k]);
+  PairCache f = flipped(cache);
+  const int n = e.fn(b, a, f, pieces ? flipped_pieces : nullptr, out);
+  cache = flipped(f);
+  for (int k = 0; k < np; ++k) pieces[k] = flipped(flipped_pieces[k]);
   for (int k = 0; k < n; ++k) out[k].geo.normal = -out[k].geo.normal;
   return n;
 }

@@ -8,19 +8,20 @@
 namespace grainlab::routines {
 
 // Grain-grain (routines_grain.cpp).
-int sphere_sphere(const PosedShape& a, const PosedShape& b, PairCache& c, SubContact* out);
-int sphere_polytope(const PosedShape& a, const PosedShape& b, PairCache& c, SubContact* out);
-int polytope_polytope(const PosedShape& a, const PosedShape& b, PairCache& c, SubContact* out);
+int sphere_sphere(const PosedShape& a, const PosedShape& b, PairCache& c, PairCache*, SubContact* out);
+int sphere_polytope(const PosedShape& a, const PosedShape& b, PairCache& c, PairCache*, SubContact* out);
+int polytope_polytope(const PosedShape& a, const PosedShape& b, PairCache& c, PairCache*, SubContact* out);
 
 // Wall-grain (routines_wall.cpp).
-int plane_sphere(const PosedShape& a, const PosedShape& b, PairCache& c, SubContact* out);
-int plane_polytope(const PosedShape& a, const PosedShape& b, PairCache& c, SubContact* out);
-int box_sphere(const PosedShape& a, const PosedShape& b, PairCache& c, SubContact* out);
-int box_polytope(const PosedShape& a, const PosedShape& b, PairCache& c, SubContact* out);
+int plane_sphere(const PosedShape& a, const PosedShape& b, PairCache& c, PairCache*, SubContact* out);
+int plane_polytope(const PosedShape& a, const PosedShape& b, PairCache& c, PairCache*, SubContact* out);
+int box_sphere(const PosedShape& a, const PosedShape& b, PairCache& c, PairCache*, SubContact* out);
+int box_polytope(const PosedShape& a, const PosedShape& b, PairCache& c, PairCache*, SubContact* out);
 
 // Compound pieces (routines_compound.cpp): a convex shape (grain or wall)
-// against each piece of a compound b, and compound against compound.
-int any_compound(const PosedShape& a, const PosedShape& b, PairCache& c, SubContact* out);
-int compound_compound(const PosedShape& a, const PosedShape& b, PairCache& c, SubContact* out);
+// against each piece of a compound b, and compound against compound; each
+// piece pair with its own cache in `pieces` (by sub-contact id) when given.
+int any_compound(const PosedShape& a, const PosedShape& b, PairCache& c, PairCache* pieces, SubContact* out);
+int compound_compound(const PosedShape& a, const PosedShape& b, PairCache& c, PairCache* pieces, SubContact* out);
 
 }  // namespace grainlab::routines

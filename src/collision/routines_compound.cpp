@@ -1,7 +1,12 @@
 // Pair routines of compound shapes (compound.h): each piece is posed as a
-// convex shape of its own and collided through the table (dispatch.h) with a
-// cold cache whose direction is the line between the two centres; only
-// touching piece contacts are written, in increasing sub-contact id.
+// convex shape of its own and collided through the table (dispatch.h) with
+// the piece pair's own cache, kept between steps as a convex pair's is (its
+// last normal, support hints and GJK simplex: simplex_cache.h), or, when the
+// caller keeps none, a cold cache whose direction is the line between the
+// two centres; a piece pair skipped (apart, or separated along the pair's
+// direction) starts its next collision cold from that line, as a convex
+// pair whose bounding spheres part does. Only touching piece contacts are
+// written, in increasing sub-contact id.
 // Pieces whose bounding spheres are apart are skipped. A contact is kept
 // only if its point lies in the cell of each piece it belongs to (compound.h),
 // widened by its depth: the point lies within half the depth of the piece, so
@@ -102,15 +107,18 @@ bool owns(const PosedShape& c, const CompoundPiece& p, const Vec3& point, double
   return true;
 }
 
-// Collides two convex shapes with a cold cache; appends each touching result
-// that `keep` accepts, with id `sub`.
+// Collides two convex shapes with `kept` (the piece pair's cache; null:
+// cold); appends each touching result that `keep` accepts, with id `sub`.
 // `size[k]` is the world bounding radius of the piece(s) of out[k].
 template <class Keep>
-void collide_piece(const PosedShape& a, const PosedShape& b, std::int32_t sub, double piece_size, SubContact* out,
-                   double* size, int& n, Keep keep) {
-  PairCache cache;
-  const Vec3 d = b.pos - a.pos;
-  if (d.squaredNorm() > 0) cache.dir = d;
+void collide_piece(const PosedShape& a, const PosedShape& b, std::int32_t sub, double piece_size, PairCache* kept,
+                   SubContact* out, double* size, int& n, Keep keep) {
+  PairCache cold;
+  PairCache& cache = kept ? *kept : cold;
+  if (!cache.warm) {
+    const Vec3 d = b.pos - a.pos;
+    cache.dir = d.squaredNorm() > 0 ? d : Vec3(Vec3::UnitX());
+  }
   SubContact r[kMaxSubContacts];
   const int m = collide_shapes(a, b, cache, r);
   for (int k = 0; k < m && n < kMaxSubContacts; ++k)
@@ -165,28 +173,37 @@ void weigh_seams(SubContact* out, const double* size, int n) {
   }
 }
 
+// The piece pair's cache is left to start cold next time (see the top).
+void skipped(PairCache* pieces, std::size_t k) {
+  if (pieces) pieces[k].warm = false;
+}
+
 }  // namespace
 
-int any_compound(const PosedShape& a, const PosedShape& b, PairCache& cache, SubContact* out) {
+int any_compound(const PosedShape& a, const PosedShape& b, PairCache& cache, PairCache* pieces, SubContact* out) {
   int n = 0;
   double size[kMaxSubContacts];
-  const auto& pieces = b.compound->pieces;
+  const auto& pb = b.compound->pieces;
   const double ra = shape_bound(a);
   const Vec3 dir = pair_direction(a, b, cache);
   const double top_a = support_value(a, dir);
-  for (std::size_t j = 0; j < pieces.size(); ++j) {
-    const PosedShape bj = pose_piece(b, pieces[j]);
-    if (apart(a, ra, bj, piece_bound(b, pieces[j]))) continue;
-    if (top_a < -support_value(bj, -dir)) continue;  // a plane along dir separates them
-    collide_piece(a, bj, static_cast<std::int32_t>(j), piece_bound(b, pieces[j]), out, size, n,
-                  [&](const ContactResult& r) { return owns(b, pieces[j], r.point, r.depth); });
+  for (std::size_t j = 0; j < pb.size(); ++j) {
+    const PosedShape bj = pose_piece(b, pb[j]);
+    // Apart, or a plane along dir separates them.
+    if (apart(a, ra, bj, piece_bound(b, pb[j])) || top_a < -support_value(bj, -dir)) {
+      skipped(pieces, j);
+      continue;
+    }
+    collide_piece(a, bj, static_cast<std::int32_t>(j), piece_bound(b, pb[j]), pieces ? pieces + j : nullptr, out, size,
+                  n, [&](const ContactResult& r) { return owns(b, pb[j], r.point, r.depth); });
   }
   weigh_seams(out, size, n);
   remember_direction(cache, out, n);
   return n;
 }
 
-int compound_compound(const PosedShape& a, const PosedShape& b, PairCache& cache, SubContact* out) {
+int compound_compound(const PosedShape& a, const PosedShape& b, PairCache& cache, PairCache* pieces,
+                      SubContact* out) {
   int n = 0;
   double size[kMaxSubContacts];
   const auto& pa = a.compound->pieces;
@@ -199,14 +216,24 @@ int compound_compound(const PosedShape& a, const PosedShape& b, PairCache& cache
   for (std::size_t i = 0; i < pa.size(); ++i) {
     const PosedShape ai = pose_piece(a, pa[i]);
     const double rai = piece_bound(a, pa[i]);
-    if (apart(ai, rai, b, rb)) continue;
+    if (apart(ai, rai, b, rb)) {
+      for (std::size_t j = 0; j < pb.size(); ++j) skipped(pieces, i * pb.size() + j);
+      continue;
+    }
     const double top_ai = support_value(ai, dir);
     for (std::size_t j = 0; j < pb.size(); ++j) {
-      if (top_ai < low_b[j]) continue;  // a plane along dir separates them
+      const std::size_t k = i * pb.size() + j;
+      if (top_ai < low_b[j]) {  // a plane along dir separates them
+        skipped(pieces, k);
+        continue;
+      }
       const PosedShape bj = pose_piece(b, pb[j]);
-      if (apart(ai, rai, bj, piece_bound(b, pb[j]))) continue;
-      collide_piece(ai, bj, static_cast<std::int32_t>(i * pb.size() + j), std::min(rai, piece_bound(b, pb[j])), out,
-                    size, n, [&](const ContactResult& r) {
+      if (apart(ai, rai, bj, piece_bound(b, pb[j]))) {
+        skipped(pieces, k);
+        continue;
+      }
+      collide_piece(ai, bj, static_cast<std::int32_t>(k), std::min(rai, piece_bound(b, pb[j])),
+                    pieces ? pieces + k : nullptr, out, size, n, [&](const ContactResult& r) {
                       return owns(a, pa[i], r.point, r.depth) && owns(b, pb[j], r.point, r.depth);
                     });
     }

@@ -8,19 +8,19 @@
 
 namespace grainlab::routines {
 
-int sphere_sphere(const PosedShape& a, const PosedShape& b, PairCache&, SubContact* out) {
+int sphere_sphere(const PosedShape& a, const PosedShape& b, PairCache&, PairCache*, SubContact* out) {
   out[0] = {collide(SphereShape{a.pos, a.radius}, SphereShape{b.pos, b.radius}), 0};
   return 1;
 }
 
-int sphere_polytope(const PosedShape& a, const PosedShape& b, PairCache& c, SubContact* out) {
+int sphere_polytope(const PosedShape& a, const PosedShape& b, PairCache& c, PairCache*, SubContact* out) {
   PolytopeShape pb{b.hull, *b.rot, b.pos, b.scale, c.hint_b};
   out[0] = {collide_convex(SphereShape{a.pos, a.radius}, pb, c.dir), 0};
   c.hint_b = pb.hint;
   return 1;
 }
 
-int polytope_polytope(const PosedShape& a, const PosedShape& b, PairCache& c, SubContact* out) {
+int polytope_polytope(const PosedShape& a, const PosedShape& b, PairCache& c, PairCache*, SubContact* out) {
   PolytopeShape pa{a.hull, *a.rot, a.pos, a.scale, c.hint_a};
   PolytopeShape pb{b.hull, *b.rot, b.pos, b.scale, c.hint_b};
   out[0] = {collide_convex(pa, pb, c.dir, c.warm, &c.simplex), 0};

@@ -7,12 +7,12 @@
 
 namespace grainlab::routines {
 
-int plane_sphere(const PosedShape& a, const PosedShape& b, PairCache&, SubContact* out) {
+int plane_sphere(const PosedShape& a, const PosedShape& b, PairCache&, PairCache*, SubContact* out) {
   out[0] = {collide(PlaneShape{a.pos, *a.q * Vec3::UnitZ()}, SphereShape{b.pos, b.radius}), 0};
   return 1;
 }
 
-int plane_polytope(const PosedShape& a, const PosedShape& b, PairCache& c, SubContact* out) {
+int plane_polytope(const PosedShape& a, const PosedShape& b, PairCache& c, PairCache*, SubContact* out) {
   const PlaneShape plane{a.pos, *a.q * Vec3::UnitZ()};
   PolytopeShape pb{b.hull, *b.rot, b.pos, b.scale, c.hint_b};
   out[0] = {collide(plane, pb), 0};
@@ -20,12 +20,12 @@ int plane_polytope(const PosedShape& a, const PosedShape& b, PairCache& c, SubCo
   return 1;
 }
 
-int box_sphere(const PosedShape& a, const PosedShape& b, PairCache&, SubContact* out) {
+int box_sphere(const PosedShape& a, const PosedShape& b, PairCache&, PairCache*, SubContact* out) {
   out[0] = {collide(BoxShape{*a.rot, a.pos, a.half}, SphereShape{b.pos, b.radius}), 0};
   return 1;
 }
 
-int box_polytope(const PosedShape& a, const PosedShape& b, PairCache& c, SubContact* out) {
+int box_polytope(const PosedShape& a, const PosedShape& b, PairCache& c, PairCache*, SubContact* out) {
   const BoxShape box{*a.rot, a.pos, a.half};
   PolytopeShape pb{b.hull, *b.rot, b.pos, b.scale, c.hint_b};
   out[0] = {collide_convex(box, pb, c.dir, c.warm), 0};

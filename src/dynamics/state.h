@@ -40,6 +40,10 @@ struct CandidatePair {
   // so it never changes a result; not checkpointed.
   std::int32_t first_contact = kUnknownContacts;
   static constexpr std::int32_t kNoContacts = -1, kUnknownContacts = -2;
+  // A pair with a compound: where its piece-pair caches begin in the State's
+  // piece_caches (or wall_piece_caches), piece_cache_count of them
+  // (collision/dispatch.h); -1: none (convex shapes, or not yet given: cold).
+  std::int32_t pieces = -1;
 
   std::uint64_t key() const {
     return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) |
@@ -102,6 +106,9 @@ struct State {
   std::vector<WallState> walls;
   std::vector<CandidatePair> pairs;       // grain-grain candidates, sorted by (a, b)
   std::vector<CandidatePair> wall_pairs;  // wall-grain candidates, sorted by (wall, grain)
+  // The piece-pair caches of the candidates with a compound (concave grains):
+  // the blocks CandidatePair::pieces points at, in the pairs' order.
+  std::vector<PairCache> piece_caches, wall_piece_caches;
   std::vector<Contact> contacts;          // touching grain-grain contacts, sorted by (a, b, sub)
   std::vector<Contact> wall_contacts;     // touching wall-grain contacts, sorted by (wall, grain, sub)
   // Verlet-skin bookkeeping: positions at the last broadphase rebuild. Code

@@ -37,6 +37,15 @@ void carry_history(const std::vector<CandidatePair>& old_pairs, std::vector<Cand
   }
 }
 
+// The piece-pair caches of pair pc of shapes a, b in `pool`, or null (none,
+// or a block that does not fit: a state from elsewhere, collided cold).
+PairCache* piece_block(std::vector<PairCache>& pool, const CandidatePair& pc, const PosedShape& a,
+                       const PosedShape& b) {
+  if (pc.pieces < 0) return nullptr;
+  const auto first = static_cast<std::size_t>(pc.pieces);
+  return first + static_cast<std::size_t>(piece_cache_count(a, b)) <= pool.size() ? &pool[first] : nullptr;
+}
+
 // Index of the first contact of pair (a, b) in `contacts` (sorted by (a, b,
 // sub)), or where it would be: `hint` if it is that index, else by binary search.
 std::size_t first_contact_of(const std::vector<Contact>& contacts, Index a, Index b, std::int32_t hint) {
@@ -245,6 +254,7 @@ void World::broadphase() {
     }
     carry_history(state.pairs, scratch_);
     state.pairs.swap(scratch_);
+    if (!spheres_only()) assign_piece_caches(state.pairs, false, state.piece_caches);
     state.x_at_rebuild.resize(n);
     for (std::size_t i = 0; i < n; ++i) state.x_at_rebuild[i] = state.bodies[i].x;
     state.rebuild_pairs = false;
@@ -278,6 +288,7 @@ void World::broadphase() {
   }
   carry_history(state.wall_pairs, scratch_);
   state.wall_pairs.swap(scratch_);
+  if (!keep) assign_piece_caches(state.wall_pairs, true, state.wall_piece_caches);
   state.wall_x_at_rebuild.clear();
   state.wall_q_at_rebuild.clear();
   if (!keep) return;
@@ -285,6 +296,21 @@ void World::broadphase() {
     state.wall_x_at_rebuild.push_back(w.x);
     state.wall_q_at_rebuild.push_back(w.q);
   }
+}
+
+void World::assign_piece_caches(std::vector<CandidatePair>& pairs, bool walls, std::vector<PairCache>& pool) {
+  piece_scratch_.clear();
+  for (CandidatePair& p : pairs) {
+    const int n = piece_cache_count(walls ? posed_wall(p.a) : posed_body(p.a), posed_body(p.b));
+    const std::int32_t old = p.pieces;
+    p.pieces = n > 0 ? static_cast<std::int32_t>(piece_scratch_.size()) : -1;
+    if (n == 0) continue;
+    if (old >= 0 && static_cast<std::size_t>(old) + n <= pool.size())
+      piece_scratch_.insert(piece_scratch_.end(), pool.begin() + old, pool.begin() + old + n);
+    else
+      piece_scratch_.resize(piece_scratch_.size() + static_cast<std::size_t>(n));
+  }
+  pool.swap(piece_scratch_);
 }
 
 bool World::wall_pairs_due() const {
@@ -323,16 +349,22 @@ PosedShape World::posed_wall(Index w) const {
   return p;
 }
 
-int World::collide_pair(CandidatePair& pc, SubContact* out) const {
+int World::collide_pair(CandidatePair& pc, SubContact* out) {
   const BodyModel& ma = model.bodies[pc.a];
   const BodyModel& mb = model.bodies[pc.b];
   // Bounding spheres apart: no contact, no narrowphase.
   const double reach = ma.bounding_radius + mb.bounding_radius;
   if ((state.bodies[pc.b].x - state.bodies[pc.a].x).squaredNorm() > reach * reach) {
     pc.cache.warm = false;  // the last normal will be stale when they meet
+    if (pc.pieces >= 0) {     // and so will the pieces'
+      const PosedShape a = posed_body(pc.a), b = posed_body(pc.b);
+      if (PairCache* pieces = piece_block(state.piece_caches, pc, a, b))
+        for (int k = 0; k < piece_cache_count(a, b); ++k) pieces[k].warm = false;
+    }
     return 0;
   }
-  return collide_shapes(posed_body(pc.a), posed_body(pc.b), pc.cache, out);
+  const PosedShape a = posed_body(pc.a), b = posed_body(pc.b);
+  return collide_shapes(a, b, pc.cache, out, piece_block(state.piece_caches, pc, a, b));
 }
 
 int World::collide_spheres(CandidatePair& pc, SubContact* out) const {
@@ -354,8 +386,9 @@ int World::collide_spheres(CandidatePair& pc, SubContact* out) const {
   return 1;
 }
 
-int World::collide_wall(CandidatePair& pc, SubContact* out) const {
-  return collide_shapes(posed_wall(pc.a), posed_body(pc.b), pc.cache, out);
+int World::collide_wall(CandidatePair& pc, SubContact* out) {
+  const PosedShape a = posed_wall(pc.a), b = posed_body(pc.b);
+  return collide_shapes(a, b, pc.cache, out, piece_block(state.wall_piece_caches, pc, a, b));
 }
 
 void World::collide_list(std::vector<CandidatePair>& pairs, bool walls, std::vector<Contact>& contacts) {

@@ -101,9 +101,9 @@ class World {
   void integrate(double dt);
   void bookkeeping();
   void mix_pair_table();
-  int collide_pair(CandidatePair& pc, SubContact* out) const;
+  int collide_pair(CandidatePair& pc, SubContact* out);
   int collide_spheres(CandidatePair& pc, SubContact* out) const;  // collide_pair of two spheres, touching only
-  int collide_wall(CandidatePair& pc, SubContact* out) const;
+  int collide_wall(CandidatePair& pc, SubContact* out);
   void collide_list(std::vector<CandidatePair>& pairs, bool walls, std::vector<Contact>& contacts);
   PosedShape posed_wall(Index w) const;
 
@@ -128,6 +128,11 @@ class World {
   std::vector<Aabb> aabb_;
   std::vector<BodyPair> candidates_;
   std::vector<CandidatePair> scratch_;
+  std::vector<PairCache> piece_scratch_;
+  // Gives each pair with a compound its block of piece-pair caches in
+  // `pool`: its own from `old_pool` if carried there (carry_history), else
+  // cold ones; `old_pool` and `pool` swap.
+  void assign_piece_caches(std::vector<CandidatePair>& pairs, bool walls, std::vector<PairCache>& pool);
   std::vector<SubContact> sub_results_;  // narrowphase: sub_contact_slots() per pair
   std::vector<int> sub_counts_;          // narrowphase: touching results per pair, then offsets
   std::vector<Contact> next_contacts_;   // the contact list being compacted

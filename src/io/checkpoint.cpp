@@ -3,14 +3,19 @@
 // struct padding never reaches the file. Payload order:
 //   config_hash u64, time f64, step i64, rebuild_pairs u8,
 //   counts u64: bodies, walls, pairs, wall_pairs, contacts, wall_contacts,
-//            x_at_rebuild, protocol,
+//            x_at_rebuild, protocol, piece_caches, wall_piece_caches,
 //   bodies   (x, v, w: 3 f64 each; q: x, y, z, w),
 //   walls    (x, q, v, force),
-//   pairs, wall_pairs (a, b i32; cache: dir; hint_a, hint_b i32; warm u8;
-//            simplex: n i32, a[3], b[3] i32),
+//   pairs, wall_pairs (a, b i32; cache; pieces i32), where a cache is
+//            dir; hint_a, hint_b i32; warm u8; simplex: n i32, a[3], b[3] i32,
 //   contacts, wall_contacts (a, b, sub i32; xi; geo: touching u8, depth,
 //            normal, point, spread, gain, twist; force, torque, normal_force),
-//   x_at_rebuild (3 f64 each), protocol bytes.
+//   x_at_rebuild (3 f64 each), protocol bytes, piece_caches and
+//   wall_piece_caches (a cache each).
+// Version 5 (before the piece-pair caches) is read too: no piece-cache
+// counts, no pieces field, no caches; its pairs of concave grains then
+// start their pieces cold, as a new pair does (a run resumed from it is
+// deterministic, not the bits of the run that wrote it).
 #include "io/checkpoint.h"
 
 #include "core/bytes.h"
@@ -49,25 +54,38 @@ Reader checkpoint_reader(std::span<const std::uint8_t> bytes, const std::string&
                 " Delete it and start the run again without --resume.");
 }
 
-void write_pair(Writer& w, const CandidatePair& p) {
-  w.i32(p.a), w.i32(p.b);
-  w.vec(p.cache.dir);
-  w.i32(p.cache.hint_a), w.i32(p.cache.hint_b);
-  w.u8(p.cache.warm ? 1 : 0);
-  const SimplexCache& s = p.cache.simplex;
-  w.i32(s.n);
-  for (int i = 0; i < 3; ++i) w.i32(s.a[i]), w.i32(s.b[i]);
+// The first version without the piece-pair caches, still read.
+constexpr std::uint32_t kVersionWithoutPieces = 5;
+
+void write_cache(Writer& w, const PairCache& c) {
+  w.vec(c.dir);
+  w.i32(c.hint_a), w.i32(c.hint_b);
+  w.u8(c.warm ? 1 : 0);
+  w.i32(c.simplex.n);
+  for (int i = 0; i < 3; ++i) w.i32(c.simplex.a[i]), w.i32(c.simplex.b[i]);
 }
 
-CandidatePair read_pair(Reader& r) {
+PairCache read_cache(Reader& r) {
+  PairCache c;
+  c.dir = r.vec();
+  c.hint_a = r.i32(), c.hint_b = r.i32();
+  c.warm = r.flag();
+  c.simplex.n = r.i32();
+  for (int i = 0; i < 3; ++i) c.simplex.a[i] = r.i32(), c.simplex.b[i] = r.i32();
+  return c;
+}
+
+void write_pair(Writer& w, const CandidatePair& p) {
+  w.i32(p.a), w.i32(p.b);
+  write_cache(w, p.cache);
+  w.i32(p.pieces);
+}
+
+CandidatePair read_pair(Reader& r, bool with_pieces) {
   CandidatePair p;
   p.a = r.i32(), p.b = r.i32();
-  p.cache.dir = r.vec();
-  p.cache.hint_a = r.i32(), p.cache.hint_b = r.i32();
-  p.cache.warm = r.flag();
-  SimplexCache& s = p.cache.simplex;
-  s.n = r.i32();
-  for (int i = 0; i < 3; ++i) s.a[i] = r.i32(), s.b[i] = r.i32();
+  p.cache = read_cache(r);
+  if (with_pieces) p.pieces = r.i32();
   return p;
 }
 
@@ -99,7 +117,8 @@ Contact read_contact(Reader& r) {
 
 constexpr std::size_t kBodyBytes = 13 * 8;
 constexpr std::size_t kWallBytes = 13 * 8;
-constexpr std::size_t kPairBytes = 4 * 4 + 1 + 3 * 8 + 7 * 4;
+constexpr std::size_t kCacheBytes = 2 * 4 + 1 + 3 * 8 + 7 * 4;
+constexpr std::size_t kPairBytes = 2 * 4 + kCacheBytes + 4;
 constexpr std::size_t kContactBytes = 3 * 4 + 1 + 22 * 8;
 
 }  // namespace
@@ -139,6 +158,7 @@ std::vector<std::uint8_t> encode_checkpoint(const State& state, std::span<const 
   p.u64(state.bodies.size()), p.u64(state.walls.size()), p.u64(state.pairs.size());
   p.u64(state.wall_pairs.size()), p.u64(state.contacts.size()), p.u64(state.wall_contacts.size());
   p.u64(state.x_at_rebuild.size()), p.u64(protocol.size());
+  p.u64(state.piece_caches.size()), p.u64(state.wall_piece_caches.size());
   for (const BodyState& b : state.bodies) p.vec(b.x), p.vec(b.v), p.vec(b.w), p.quat(b.q);
   for (const WallState& w : state.walls) p.vec(w.x), p.quat(w.q), p.vec(w.v), p.vec(w.force);
   for (const CandidatePair& c : state.pairs) write_pair(p, c);
@@ -147,6 +167,8 @@ std::vector<std::uint8_t> encode_checkpoint(const State& state, std::span<const 
   for (const Contact& c : state.wall_contacts) write_contact(p, c);
   for (const Vec3& x : state.x_at_rebuild) p.vec(x);
   p.bytes.insert(p.bytes.end(), protocol.begin(), protocol.end());
+  for (const PairCache& c : state.piece_caches) write_cache(p, c);
+  for (const PairCache& c : state.wall_piece_caches) write_cache(p, c);
 
   Writer file;
   file.bytes.assign(std::begin(kMagic), std::end(kMagic));
@@ -165,10 +187,11 @@ Checkpoint decode_checkpoint(std::span<const std::uint8_t> bytes, const std::str
                 source_name);
   Reader header = checkpoint_reader(bytes.subspan(8), source_name);
   const std::uint32_t version = header.u32();
-  if (version != kCheckpointVersion)
-    input_error("checkpoint '{}' has format version {}, this grainlab reads version {}. Resume it with the "
+  if (version != kCheckpointVersion && version != kVersionWithoutPieces)
+    input_error("checkpoint '{}' has format version {}, this grainlab reads versions {} and {}. Resume it with the "
                 "grainlab that wrote it, or start the run again without --resume.",
-                source_name, version, kCheckpointVersion);
+                source_name, version, kVersionWithoutPieces, kCheckpointVersion);
+  const bool with_pieces = version > kVersionWithoutPieces;
   header.u32();  // reserved
   const std::uint64_t size = header.u64();
   const std::uint64_t checksum = header.u64();
@@ -190,17 +213,20 @@ Checkpoint decode_checkpoint(std::span<const std::uint8_t> bytes, const std::str
   s.step = r.i64();
   s.rebuild_pairs = r.flag();
   const std::size_t n_bodies = r.count(kBodyBytes), n_walls = r.count(kWallBytes);
-  const std::size_t n_pairs = r.count(kPairBytes), n_wall_pairs = r.count(kPairBytes);
+  const std::size_t pair_bytes = with_pieces ? kPairBytes : kPairBytes - 4;
+  const std::size_t n_pairs = r.count(pair_bytes), n_wall_pairs = r.count(pair_bytes);
   const std::size_t n_contacts = r.count(kContactBytes), n_wall_contacts = r.count(kContactBytes);
   const std::size_t n_rebuild = r.count(24), n_protocol = r.count(1);
+  const std::size_t n_pieces = with_pieces ? r.count(kCacheBytes) : 0;
+  const std::size_t n_wall_pieces = with_pieces ? r.count(kCacheBytes) : 0;
   s.bodies.resize(n_bodies);
   for (BodyState& b : s.bodies) b.x = r.vec(), b.v = r.vec(), b.w = r.vec(), b.q = r.quat();
   s.walls.resize(n_walls);
   for (WallState& w : s.walls) w.x = r.vec(), w.q = r.quat(), w.v = r.vec(), w.force = r.vec();
   s.pairs.reserve(n_pairs);
-  for (std::size_t i = 0; i < n_pairs; ++i) s.pairs.push_back(read_pair(r));
+  for (std::size_t i = 0; i < n_pairs; ++i) s.pairs.push_back(read_pair(r, with_pieces));
   s.wall_pairs.reserve(n_wall_pairs);
-  for (std::size_t i = 0; i < n_wall_pairs; ++i) s.wall_pairs.push_back(read_pair(r));
+  for (std::size_t i = 0; i < n_wall_pairs; ++i) s.wall_pairs.push_back(read_pair(r, with_pieces));
   s.contacts.reserve(n_contacts);
   for (std::size_t i = 0; i < n_contacts; ++i) s.contacts.push_back(read_contact(r));
   s.wall_contacts.reserve(n_wall_contacts);
@@ -209,6 +235,14 @@ Checkpoint decode_checkpoint(std::span<const std::uint8_t> bytes, const std::str
   for (Vec3& x : s.x_at_rebuild) x = r.vec();
   c.protocol.resize(n_protocol);
   for (std::uint8_t& b : c.protocol) b = r.u8();
+  s.piece_caches.resize(n_pieces);
+  for (PairCache& pc : s.piece_caches) pc = read_cache(r);
+  s.wall_piece_caches.resize(n_wall_pieces);
+  for (PairCache& pc : s.wall_piece_caches) pc = read_cache(r);
+  for (const auto& [pairs, pool] : {std::pair{&s.pairs, &s.piece_caches}, std::pair{&s.wall_pairs, &s.wall_piece_caches}})
+    for (const CandidatePair& p : *pairs)
+      if (p.pieces < -1 || (p.pieces >= 0 && static_cast<std::size_t>(p.pieces) >= pool->size()))
+        r.corrupted("a pair's piece caches lie outside their list");
   if (r.left() != 0) r.corrupted("bytes left over after the last field");
   return c;
 }

@@ -264,3 +264,79 @@ TEST(ConcaveContact, PieceContactsDoNotDependOnThePairsTestDirection) {
   }
   EXPECT_EQ(touching, 60);
 }
+
+// The piece pairs of a pair of concave grains keep their caches between
+// steps (CandidatePair::pieces) as a convex pair does; a cache only starts
+// GJK elsewhere, so the contacts must follow those of cold pieces. Two dented
+// grains pressed together, one creeping and turning for 100 steps, in three
+// orders: both concave, concave against a hull (the table flips that pair and
+// its piece caches) and a hull against concave.
+TEST(ConcaveContact, PieceContactsWithKeptCachesFollowColdOnesAsThePairMoves) {
+  GeneratorSpec g = preset_spec(GrainPreset::SubAngular);
+  g.faces = 200;
+  g.convexity = 0.85;
+  Rng r0(200), r1(201);
+  const TriMesh ma = generate_grain(g, r0), mb = generate_grain(g, r1);
+  enum class Kinds { ConcaveConcave, ConcaveHull, HullConcave };
+  int warm_pieces = 0, compared = 0;
+  for (const Kinds kinds : {Kinds::ConcaveConcave, Kinds::ConcaveHull, Kinds::HullConcave}) {
+    World w;
+    w.model.gravity = Vec3::Zero();
+    const auto shape = [&](const TriMesh& m, bool concave) {
+      return concave ? w.model.add_concave_shape(m, decompose_convex(m), "c") : w.model.add_mesh_shape(m, "h");
+    };
+    const Index a = w.add_body(shape(ma, kinds != Kinds::HullConcave), 0, 1.0, Vec3::Zero());
+    const Index b = w.add_body(shape(mb, kinds != Kinds::ConcaveHull), 0, 1.0, Vec3::Zero());
+    Rng rng(9);
+    SubContact out[kMaxSubContacts], ref[kMaxSubContacts];
+    for (int pose = 0; pose < 8; ++pose) {
+      w.state.bodies[a].q = rng.rotation();
+      w.state.bodies[b].q = rng.rotation();
+      const Vec3 u = rng.unit_vector();
+      w.step(1e-30);  // pose the rotations
+      double lo = 0, hi = 3;  // bisect the distance along u at which they touch, then press
+      for (int it = 0; it < 50; ++it) {
+        const double mid = 0.5 * (lo + hi);
+        w.state.bodies[b].x = mid * u;
+        PairCache cold;
+        (collide_shapes(w.posed_body(a), w.posed_body(b), cold, out) > 0 ? lo : hi) = mid;
+      }
+      w.state.bodies[b].x = (lo + 0.002) * u;  // 0.002 apart, then creeping in by 1e-4 a step
+      const int np = piece_cache_count(w.posed_body(a), w.posed_body(b));
+      ASSERT_GT(np, 1);
+      std::vector<PairCache> pieces(static_cast<std::size_t>(np));
+      PairCache kept, cold_pair;
+      const Vec3 creep = -1e-4 * u + 2e-5 * rng.unit_vector();
+      const Vec3 spin = 1e-4 * rng.unit_vector();
+      for (int step = 0; step < 100; ++step) {
+        w.state.bodies[b].x += creep;
+        w.state.bodies[b].q = (Quat(Eigen::AngleAxisd(spin.norm(), spin.normalized())) * w.state.bodies[b].q).normalized();
+        w.step(1e-30);
+        PairCache cold = cold_pair;
+        const int n_ref = collide_shapes(w.posed_body(a), w.posed_body(b), cold, ref);
+        cold_pair = cold;  // the pair's own direction carries over in both
+        const int n = collide_shapes(w.posed_body(a), w.posed_body(b), kept, out, pieces.data());
+        ASSERT_EQ(n, n_ref) << "pose " << pose << " step " << step;
+        for (int k = 0; k < n; ++k) {
+          ASSERT_EQ(out[k].sub, ref[k].sub);
+          ASSERT_EQ(out[k].geo.touching, ref[k].geo.touching);
+          EXPECT_NEAR(out[k].geo.depth, ref[k].geo.depth, 1e-9 * std::abs(ref[k].geo.depth) + 1e-15)
+              << "pose " << pose << " step " << step;
+          EXPECT_LT((out[k].geo.normal - ref[k].geo.normal).norm(), 1e-7) << "pose " << pose << " step " << step;
+          EXPECT_LT((out[k].geo.point - ref[k].geo.point).norm(), 1e-9) << "pose " << pose << " step " << step;
+          ++compared;
+        }
+        for (const PairCache& c : pieces) warm_pieces += c.warm && c.simplex.n > 0;
+        // Each touching piece pair's cache is kept for a to b, as the pair's
+        // own: its direction is the contact normal's (a flip left undone
+        // would point it back).
+        for (int k = 0; k < n; ++k) {
+          const PairCache& c = pieces[static_cast<std::size_t>(out[k].sub)];
+          EXPECT_GT(c.dir.normalized().dot(out[k].geo.normal), 0.5) << "pose " << pose << " step " << step;
+        }
+      }
+    }
+  }
+  EXPECT_GT(compared, 500);
+  EXPECT_GT(warm_pieces, 500);  // the caches were kept and used
+}

@@ -1,5 +1,6 @@
 // Checkpoints: a State with random contents comes back bit for bit; damaged,
 // truncated and wrong-version files are refused with a clear message.
+#include "core/bytes.h"
 #include "io/checkpoint.h"
 
 #include "core/error.h"
@@ -27,9 +28,19 @@ class RandomFill {
   bool b() { return bits_(rng_) & 1; }
   std::size_t n(std::size_t max) { return bits_(rng_) % (max + 1); }
 
-  CandidatePair pair() {
+  PairCache cache() {
+    PairCache c;
+    c.dir = v(), c.hint_a = i(), c.hint_b = i(), c.warm = b();
+    c.simplex.n = static_cast<std::int32_t>(n(3));
+    for (int k = 0; k < 3; ++k) c.simplex.a[k] = i(), c.simplex.b[k] = i();
+    return c;
+  }
+
+  // A pair, with piece caches at `pieces` (or -1) of a pool of `pool` caches.
+  CandidatePair pair(std::size_t pool) {
     CandidatePair p;
-    p.a = i(), p.b = i(), p.cache.dir = v(), p.cache.hint_a = i(), p.cache.hint_b = i(), p.cache.warm = b();
+    p.a = i(), p.b = i(), p.cache = cache();
+    p.pieces = pool > 0 && b() ? static_cast<std::int32_t>(n(pool - 1)) : -1;
     return p;
   }
 
@@ -50,10 +61,14 @@ class RandomFill {
     for (BodyState& x : s.bodies) x.x = v(), x.v = v(), x.w = v(), x.q = q();
     s.walls.resize(n(6) + 1);
     for (WallState& w : s.walls) w.x = v(), w.q = q(), w.v = v(), w.force = v();
+    s.piece_caches.resize(n(100));
+    for (PairCache& c : s.piece_caches) c = cache();
+    s.wall_piece_caches.resize(n(20));
+    for (PairCache& c : s.wall_piece_caches) c = cache();
     s.pairs.resize(n(80) + 1);
-    for (CandidatePair& p : s.pairs) p = pair();
+    for (CandidatePair& p : s.pairs) p = pair(s.piece_caches.size());
     s.wall_pairs.resize(n(30) + 1);
-    for (CandidatePair& p : s.wall_pairs) p = pair();
+    for (CandidatePair& p : s.wall_pairs) p = pair(s.wall_piece_caches.size());
     s.contacts.resize(n(80) + 1);
     for (Contact& p : s.contacts) p = contact();
     s.wall_contacts.resize(n(30) + 1);
@@ -76,13 +91,22 @@ void expect_same(const Vec3& a, const Vec3& b) {
 void expect_same(const Quat& a, const Quat& b) {
   for (int k = 0; k < 4; ++k) EXPECT_EQ(bits(a.coeffs()[k]), bits(b.coeffs()[k]));
 }
+void expect_same(const PairCache& a, const PairCache& b) {
+  expect_same(a.dir, b.dir);
+  EXPECT_EQ(a.hint_a, b.hint_a);
+  EXPECT_EQ(a.hint_b, b.hint_b);
+  EXPECT_EQ(a.warm, b.warm);
+  EXPECT_EQ(a.simplex.n, b.simplex.n);
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_EQ(a.simplex.a[k], b.simplex.a[k]);
+    EXPECT_EQ(a.simplex.b[k], b.simplex.b[k]);
+  }
+}
 void expect_same(const CandidatePair& a, const CandidatePair& b) {
   EXPECT_EQ(a.a, b.a);
   EXPECT_EQ(a.b, b.b);
-  expect_same(a.cache.dir, b.cache.dir);
-  EXPECT_EQ(a.cache.hint_a, b.cache.hint_a);
-  EXPECT_EQ(a.cache.hint_b, b.cache.hint_b);
-  EXPECT_EQ(a.cache.warm, b.cache.warm);
+  expect_same(a.cache, b.cache);
+  EXPECT_EQ(a.pieces, b.pieces);
 }
 void expect_same(const Contact& a, const Contact& b) {
   EXPECT_EQ(a.a, b.a);
@@ -126,6 +150,11 @@ void expect_same(const State& a, const State& b) {
   for (std::size_t i = 0; i < a.wall_contacts.size(); ++i) expect_same(a.wall_contacts[i], b.wall_contacts[i]);
   ASSERT_EQ(a.x_at_rebuild.size(), b.x_at_rebuild.size());
   for (std::size_t i = 0; i < a.x_at_rebuild.size(); ++i) expect_same(a.x_at_rebuild[i], b.x_at_rebuild[i]);
+  ASSERT_EQ(a.piece_caches.size(), b.piece_caches.size());
+  for (std::size_t i = 0; i < a.piece_caches.size(); ++i) expect_same(a.piece_caches[i], b.piece_caches[i]);
+  ASSERT_EQ(a.wall_piece_caches.size(), b.wall_piece_caches.size());
+  for (std::size_t i = 0; i < a.wall_piece_caches.size(); ++i)
+    expect_same(a.wall_piece_caches[i], b.wall_piece_caches[i]);
 }
 
 TEST(Checkpoint, RandomStateRoundTripsBitForBit) {
@@ -190,6 +219,50 @@ TEST(Checkpoint, WrongVersionAndWrongFileAreRefused) {
   EXPECT_NE(msg.find("not a grainlab checkpoint"), std::string::npos) << msg;
   const std::string missing = test::error_of<InputError>([] { load_checkpoint("/no/such/checkpoint.bin"); });
   EXPECT_NE(missing.find("/no/such/checkpoint.bin"), std::string::npos) << missing;
+}
+
+// The same checkpoint in format version 5 (before the piece-pair caches):
+// no piece-cache counts, no pieces field per pair, no caches. `s` has none.
+std::vector<std::uint8_t> as_version5(const State& s, const std::vector<std::uint8_t>& v6) {
+  constexpr std::size_t header = 32, pair_bytes = 73, count_at = 8 + 8 + 8 + 1;
+  const std::vector<std::uint8_t> payload(v6.begin() + header, v6.end());
+  std::vector<std::uint8_t> out(payload.begin(), payload.begin() + count_at + 8 * 8);  // the first 8 counts
+  std::size_t at = count_at + 10 * 8;
+  const std::size_t before_pairs = (s.bodies.size() + s.walls.size()) * 13 * 8;
+  out.insert(out.end(), payload.begin() + at, payload.begin() + at + before_pairs);
+  at += before_pairs;
+  for (std::size_t k = 0; k < s.pairs.size() + s.wall_pairs.size(); ++k, at += pair_bytes)
+    out.insert(out.end(), payload.begin() + at, payload.begin() + at + pair_bytes - 4);
+  out.insert(out.end(), payload.begin() + at, payload.end());
+  ByteWriter file;
+  file.bytes.assign(v6.begin(), v6.begin() + 8);
+  file.u32(5), file.u32(0), file.u64(out.size()), file.u64(fnv1a64(out));
+  file.bytes.insert(file.bytes.end(), out.begin(), out.end());
+  return file.bytes;
+}
+
+TEST(Checkpoint, AVersion5FileIsReadWithColdPieces) {
+  RandomFill fill(21);
+  State s = fill.state();
+  s.piece_caches.clear(), s.wall_piece_caches.clear();
+  for (CandidatePair& p : s.pairs) p.pieces = -1;
+  for (CandidatePair& p : s.wall_pairs) p.pieces = -1;
+  const std::vector<std::uint8_t> protocol{7, 8, 9};
+  const std::vector<std::uint8_t> v6 = encode_checkpoint(s, protocol, 42);
+  const std::vector<std::uint8_t> v5 = as_version5(s, v6);
+  ASSERT_EQ(v5.size(), v6.size() - 16 - 4 * (s.pairs.size() + s.wall_pairs.size()));
+  const Checkpoint c = decode_checkpoint(v5, "v5.bin");
+  expect_same(c.state, s);
+  EXPECT_EQ(c.protocol, protocol);
+  EXPECT_EQ(c.config_hash, 42u);
+}
+
+TEST(Checkpoint, APairsPieceCachesOutsideTheirListAreRefused) {
+  RandomFill fill(22);
+  State s = fill.state();
+  s.piece_caches.resize(3);
+  s.pairs[0].pieces = 3;
+  EXPECT_NE(refusal(encode_checkpoint(s, {}, 0)).find("piece caches"), std::string::npos);
 }
 
 TEST(Checkpoint, ConfigHashFollowsTheConfig) {

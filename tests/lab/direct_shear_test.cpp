@@ -36,6 +36,29 @@ TEST(DirectShear, CheckpointRestoreContinuesBitForBit) {
   EXPECT_EQ(a.series(), b.series());
 }
 
+// The same with dented grains (convexity 0.85, collided as convex pieces):
+// their pairs keep their piece pairs' caches (CandidatePair::pieces), which
+// the checkpoint carries too.
+TEST(DirectShear, CheckpointRestoreOfConcaveGrainsContinuesBitForBit) {
+  DirectShearSpec spec = tiny_box_spec();
+  spec.grains.convexity = 0.85;
+  DirectShearTest a(spec);
+  for (int i = 0; i < 3; ++i) a.advance(200);
+  ASSERT_FALSE(a.world().state.piece_caches.empty());
+  const std::vector<std::uint8_t> bytes = encode_checkpoint(a.world().state, a.save(), 42);
+  for (int i = 0; i < 3; ++i) a.advance(200);
+
+  DirectShearTest b(spec);
+  Checkpoint ck = decode_checkpoint(bytes, "in-memory");
+  b.world().state = std::move(ck.state);
+  b.load(ck.protocol);
+  for (int i = 0; i < 3; ++i) b.advance(200);
+
+  EXPECT_GT(a.world().state.contacts.size(), 0u);
+  EXPECT_TRUE(testing_support::same_state_bits(a.world().state, b.world().state));
+  EXPECT_EQ(a.series(), b.series());
+}
+
 TEST(DirectShear, GrainCountFollowsTheTargetVoidRatio) {
   const DirectShearSpec spec = tiny_box_spec();
   DirectShearTest t(spec);
