@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <fmt/format.h>
 #include <limits>
 #include <optional>
@@ -50,10 +51,16 @@ std::unique_ptr<DirectShearTest> trial_preparation(const DirectShearSpec& spec, 
     said(fmt::format("  trial at deposition friction {:.4f}: going on from step {} ({} phase), kept after {:.0f} s", mu,
                      t->world().state.step, t->phase_name(), kept_s));
   bool stepped = false;
+  std::int64_t next_line = (t->world().state.step / 10000 + 1) * 10000;
   try {
     while (t->phase() < ShearPhase::Consolidate) {
       t->advance(100);
       stepped = true;
+      if (said && t->world().state.step >= next_line) {  // a trial of angular grains runs for hours
+        next_line += 10000;
+        said(fmt::format("  trial at deposition friction {:.4f}: step {}, {} phase, {:.0f} s: {}", mu,
+                         t->world().state.step, t->phase_name(), earlier_s + clock.seconds(), t->status_line()));
+      }
       if (store)
         store->keep_if_due(*t, name, s, earlier_s + clock.seconds(), since_kept, [&] {
           return fmt::format("the trial preparation at deposition friction {:.4f} was stopped at step {} and kept "

@@ -79,7 +79,8 @@ using PreparationProgress = std::function<void(const std::string&)>;
 // taken back at once), keeps it every store->keep_interval_s and when it
 // ends, and when the store asks to stop (every 100 steps) keeps it and
 // throws Stopped (core/error.h). A trial that fails is dropped.
-// `said` (may be empty) gets a line when the trial goes on from a kept one.
+// `said` (may be empty) gets a line when the trial goes on from a kept one,
+// and one every 10,000 steps (step, phase, wall seconds, the test's status).
 std::unique_ptr<DirectShearTest> trial_preparation(const DirectShearSpec& spec, double mu, PreparationTrial& out,
                                                    PreparationStore* store = nullptr,
                                                    const std::function<void(const std::string&)>& said = {});

@@ -86,8 +86,15 @@ TEST(KeptPreparations, AStoppedTrialGoesOnToTheSameSpecimenAndAFinishedOneIsTake
   PreparationTrial resumed;
   std::vector<std::string> said;
   const auto t1 = trial_preparation(spec, mu, resumed, &going_on, [&](const std::string& l) { said.push_back(l); });
-  ASSERT_EQ(said.size(), 1u);
+  ASSERT_EQ(said.size(), 1u + static_cast<std::size_t>(straight.steps / 10000));  // + a line every 10,000 steps
   EXPECT_NE(said.front().find("going on from step 2000"), std::string::npos) << said.front();
+  for (std::size_t k = 1; k < said.size(); ++k) {  // "...: step 10050, compact phase, ..."
+    const std::size_t at = said[k].find(": step ");
+    ASSERT_NE(at, std::string::npos) << said[k];
+    const long step = std::stol(said[k].substr(at + 7));
+    EXPECT_GE(step, 10000 * static_cast<long>(k)) << said[k];
+    EXPECT_LT(step, 10000 * static_cast<long>(k) + 100) << said[k];  // within a batch of 100 steps of it
+  }
   EXPECT_EQ(resumed.steps, straight.steps);
   EXPECT_EQ(resumed.void_ratio, straight.void_ratio);
   EXPECT_EQ(t1->world().state.bodies.back().x, t0->world().state.bodies.back().x);
