@@ -104,6 +104,20 @@ SphereInTrough sphere_in_trough(As as) {
   return r;
 }
 
+// The distance along u from body a (at the origin) at which body b first
+// touches it, by bisection over [0, 3] (grains of unit size).
+double touching_distance(World& w, Index a, Index b, const Vec3& u) {
+  SubContact out[kMaxSubContacts];
+  double lo = 0, hi = 3;
+  for (int it = 0; it < 50; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    w.state.bodies[b].x = mid * u;
+    PairCache cold;
+    (collide_shapes(w.posed_body(a), w.posed_body(b), cold, out) > 0 ? lo : hi) = mid;
+  }
+  return lo;
+}
+
 }  // namespace
 
 TEST(ConcaveContact, ASphereRestsInTheTroughOfAUGrainThatItsHullWouldFill) {
@@ -239,14 +253,7 @@ TEST(ConcaveContact, PieceContactsDoNotDependOnThePairsTestDirection) {
     w.state.bodies[b].q = rng.rotation();
     const Vec3 u = rng.unit_vector();
     w.step(1e-30);  // pose the rotations
-    double lo = 0, hi = 3;  // bisect the distance along u at which they touch, then press 0.005
-    for (int it = 0; it < 50; ++it) {
-      const double mid = 0.5 * (lo + hi);
-      w.state.bodies[b].x = mid * u;
-      PairCache cold;
-      (collide_shapes(w.posed_body(a), w.posed_body(b), cold, out) > 0 ? lo : hi) = mid;
-    }
-    w.state.bodies[b].x = (lo - 0.005) * u;
+    w.state.bodies[b].x = (touching_distance(w, a, b, u) - 0.005) * u;
     PairCache cold;
     const int n_ref = collide_shapes(w.posed_body(a), w.posed_body(b), cold, ref);
     touching += n_ref > 0;
@@ -294,14 +301,7 @@ TEST(ConcaveContact, PieceContactsWithKeptCachesFollowColdOnesAsThePairMoves) {
       w.state.bodies[b].q = rng.rotation();
       const Vec3 u = rng.unit_vector();
       w.step(1e-30);  // pose the rotations
-      double lo = 0, hi = 3;  // bisect the distance along u at which they touch, then press
-      for (int it = 0; it < 50; ++it) {
-        const double mid = 0.5 * (lo + hi);
-        w.state.bodies[b].x = mid * u;
-        PairCache cold;
-        (collide_shapes(w.posed_body(a), w.posed_body(b), cold, out) > 0 ? lo : hi) = mid;
-      }
-      w.state.bodies[b].x = (lo + 0.002) * u;  // 0.002 apart, then creeping in by 1e-4 a step
+      w.state.bodies[b].x = (touching_distance(w, a, b, u) + 0.002) * u;  // 0.002 apart, creeping in 1e-4 a step
       const int np = piece_cache_count(w.posed_body(a), w.posed_body(b));
       ASSERT_GT(np, 1);
       std::vector<PairCache> pieces(static_cast<std::size_t>(np));

@@ -15,26 +15,34 @@ namespace {
 // A very small box of coarse grains: enough to exercise the protocol quickly.
 using testing_support::tiny_box_spec;
 
-}  // namespace
-
-TEST(DirectShear, CheckpointRestoreContinuesBitForBit) {
-  const DirectShearSpec spec = tiny_box_spec();
+// Runs `spec` for 2 x batches x steps; a copy restored from the checkpoint
+// taken halfway (through the real encoding, as `grainlab run --resume` does)
+// must end with the same state and series, bit for bit.
+void expect_restore_continues_bit_for_bit(const DirectShearSpec& spec, int batches, int steps,
+                                          bool concave = false) {
   DirectShearTest a(spec);
-  for (int i = 0; i < 4; ++i) a.advance(250);
-  // Through the real checkpoint encoding, as `grainlab run --resume` does.
+  for (int i = 0; i < batches; ++i) a.advance(steps);
+  if (concave) {
+    ASSERT_FALSE(a.world().state.piece_caches.empty());
+  }
   const std::vector<std::uint8_t> bytes = encode_checkpoint(a.world().state, a.save(), 42);
-  for (int i = 0; i < 4; ++i) a.advance(250);
+  for (int i = 0; i < batches; ++i) a.advance(steps);
 
   DirectShearTest b(spec);
   Checkpoint ck = decode_checkpoint(bytes, "in-memory");
   b.world().state = std::move(ck.state);
   b.load(ck.protocol);
-  for (int i = 0; i < 4; ++i) b.advance(250);
+  for (int i = 0; i < batches; ++i) b.advance(steps);
 
+  EXPECT_GT(a.world().state.contacts.size(), 0u);
   EXPECT_EQ(a.phase(), b.phase());
   EXPECT_TRUE(testing_support::same_state_bits(a.world().state, b.world().state));
   EXPECT_EQ(a.series(), b.series());
 }
+
+}  // namespace
+
+TEST(DirectShear, CheckpointRestoreContinuesBitForBit) { expect_restore_continues_bit_for_bit(tiny_box_spec(), 4, 250); }
 
 // The same with dented grains (convexity 0.85, collided as convex pieces):
 // their pairs keep their piece pairs' caches (CandidatePair::pieces), which
@@ -42,21 +50,7 @@ TEST(DirectShear, CheckpointRestoreContinuesBitForBit) {
 TEST(DirectShear, CheckpointRestoreOfConcaveGrainsContinuesBitForBit) {
   DirectShearSpec spec = tiny_box_spec();
   spec.grains.convexity = 0.85;
-  DirectShearTest a(spec);
-  for (int i = 0; i < 3; ++i) a.advance(200);
-  ASSERT_FALSE(a.world().state.piece_caches.empty());
-  const std::vector<std::uint8_t> bytes = encode_checkpoint(a.world().state, a.save(), 42);
-  for (int i = 0; i < 3; ++i) a.advance(200);
-
-  DirectShearTest b(spec);
-  Checkpoint ck = decode_checkpoint(bytes, "in-memory");
-  b.world().state = std::move(ck.state);
-  b.load(ck.protocol);
-  for (int i = 0; i < 3; ++i) b.advance(200);
-
-  EXPECT_GT(a.world().state.contacts.size(), 0u);
-  EXPECT_TRUE(testing_support::same_state_bits(a.world().state, b.world().state));
-  EXPECT_EQ(a.series(), b.series());
+  expect_restore_continues_bit_for_bit(spec, 3, 200, true);
 }
 
 TEST(DirectShear, GrainCountFollowsTheTargetVoidRatio) {
