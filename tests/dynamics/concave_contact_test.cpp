@@ -104,6 +104,15 @@ SphereInTrough sphere_in_trough(As as) {
   return r;
 }
 
+// A sub-angular grain of 200 faces with dents (convexity 0.85), unit size.
+TriMesh dented_grain(std::uint64_t seed) {
+  GeneratorSpec g = preset_spec(GrainPreset::SubAngular);
+  g.faces = 200;
+  g.convexity = 0.85;
+  Rng rng(seed);
+  return generate_grain(g, rng);
+}
+
 // The distance along u from body a (at the origin) at which body b first
 // touches it, by bisection over [0, 3] (grains of unit size).
 double touching_distance(World& w, Index a, Index b, const Vec3& u) {
@@ -236,11 +245,7 @@ TEST(ConcaveContact, ASpherePressedAcrossTheSeamsOfAFlatFaceFeelsTheHullsForce) 
 }
 
 TEST(ConcaveContact, PieceContactsDoNotDependOnThePairsTestDirection) {
-  GeneratorSpec g = preset_spec(GrainPreset::SubAngular);
-  g.faces = 200;
-  g.convexity = 0.85;
-  Rng r0(100), r1(101);
-  const TriMesh ma = generate_grain(g, r0), mb = generate_grain(g, r1);
+  const TriMesh ma = dented_grain(100), mb = dented_grain(101);
   World w;
   w.model.gravity = Vec3::Zero();
   const Index a = w.add_body(w.model.add_concave_shape(ma, decompose_convex(ma), "a"), 0, 1.0, Vec3::Zero());
@@ -279,11 +284,7 @@ TEST(ConcaveContact, PieceContactsDoNotDependOnThePairsTestDirection) {
 // orders: both concave, concave against a hull (the table flips that pair and
 // its piece caches) and a hull against concave.
 TEST(ConcaveContact, PieceContactsWithKeptCachesFollowColdOnesAsThePairMoves) {
-  GeneratorSpec g = preset_spec(GrainPreset::SubAngular);
-  g.faces = 200;
-  g.convexity = 0.85;
-  Rng r0(200), r1(201);
-  const TriMesh ma = generate_grain(g, r0), mb = generate_grain(g, r1);
+  const TriMesh ma = dented_grain(200), mb = dented_grain(201);
   enum class Kinds { ConcaveConcave, ConcaveHull, HullConcave };
   int warm_pieces = 0, compared = 0;
   for (const Kinds kinds : {Kinds::ConcaveConcave, Kinds::ConcaveHull, Kinds::HullConcave}) {
