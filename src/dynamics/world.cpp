@@ -254,7 +254,7 @@ void World::broadphase() {
     }
     carry_history(state.pairs, scratch_);
     state.pairs.swap(scratch_);
-    if (!spheres_only()) assign_piece_caches(state.pairs, false, state.piece_caches);
+    if (sub_contact_slots() > 1) assign_piece_caches(state.pairs, false, state.piece_caches);  // compounds
     state.x_at_rebuild.resize(n);
     for (std::size_t i = 0; i < n; ++i) state.x_at_rebuild[i] = state.bodies[i].x;
     state.rebuild_pairs = false;
@@ -288,7 +288,7 @@ void World::broadphase() {
   }
   carry_history(state.wall_pairs, scratch_);
   state.wall_pairs.swap(scratch_);
-  if (!keep) assign_piece_caches(state.wall_pairs, true, state.wall_piece_caches);
+  if (sub_contact_slots() > 1) assign_piece_caches(state.wall_pairs, true, state.wall_piece_caches);
   state.wall_x_at_rebuild.clear();
   state.wall_q_at_rebuild.clear();
   if (!keep) return;
