@@ -132,6 +132,11 @@ int run(const RunOptions& o) {
     Checkpoint ck = load_checkpoint(checkpoint);
     if (ck.config_hash != config_hash(spec))
       input_error("--resume: checkpoint '{}' belongs to another config", checkpoint.string());
+    if (!same_grains(ck, test.world().model))
+      input_error("--resume: checkpoint '{}' was written for other grains than this grainlab makes from the same "
+                  "config (its grain generator or mesh import changed since). Resume it with the grainlab that "
+                  "wrote it, or start the run again without --resume",
+                  checkpoint.string());
     test.world().state = std::move(ck.state);
     test.load(ck.protocol);
     fmt::print("resuming at step {} ({} phase, {} {:.4f})\n", test.world().state.step, test.phase_name(),
@@ -143,7 +148,8 @@ int run(const RunOptions& o) {
   ShearSnapshots snapshots(out, test, o.resume);
   if (!o.resume && prepared.specimen) snapshots.write_loading_start(test);
   const auto save = [&] {
-    save_checkpoint(checkpoint, test.world().state, test.save(), config_hash(spec));
+    save_checkpoint(checkpoint, test.world().state, test.save(), config_hash(spec),
+                    grains_fingerprint(test.world().model));
     drop_kept_trials(out);  // the run goes on from its checkpoint now
   };
 
@@ -177,7 +183,7 @@ int run(const RunOptions& o) {
       if (test.loading()) shear_start_step = w.state.step;
       // The prepared specimen, for runs that shear it otherwise (specimen.from).
       if (test.loading() && w.state.step == test.loading_start_step())
-        save_checkpoint(out / "specimen.bin", w.state, test.save(), specimen_hash(spec));
+        save_checkpoint(out / "specimen.bin", w.state, test.save(), specimen_hash(spec), grains_fingerprint(w.model));
       if (const std::string note = test.phase_note(); !note.empty()) fmt::print("  {}\n", note);
       fmt::print("  phase {} from step {}\n", test.phase_name(), w.state.step);
     }

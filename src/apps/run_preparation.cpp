@@ -62,6 +62,11 @@ PreparedRun prepare_run(const DirectShearSpec& spec, const fs::path& out, bool r
       input_error("specimen.from = '{}': it holds {} grains, this config places {}; use the config of the run "
                   "that wrote it",
                   from.string(), run.specimen->state.bodies.size(), run.test->world().state.bodies.size());
+    if (!same_grains(*run.specimen, run.test->world().model))
+      input_error("specimen.from = '{}': that specimen was prepared with other grains than this grainlab makes "
+                  "from the same config (its grain generator or mesh import changed since). Prepare the "
+                  "specimen again with this grainlab, or use the grainlab that wrote it",
+                  from.string());
     fs::create_directories(out);
     write_json_file(record_file, run.record);
     return run;

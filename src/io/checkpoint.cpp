@@ -148,8 +148,26 @@ std::uint64_t config_hash(const DirectShearSpec& spec) {
   return fnv1a64({reinterpret_cast<const std::uint8_t*>(text.data()), text.size()});
 }
 
+std::uint32_t grains_fingerprint(const Model& model) {
+  Writer w;
+  for (const Shape& s : model.shapes) {
+    w.u8(static_cast<std::uint8_t>(s.kind));
+    w.f64(s.volume), w.vec(s.unit_moments), w.f64(s.equivalent_radius), w.f64(s.bounding_radius);
+    w.u64(s.mesh.vertices.size());
+    for (const Vec3& v : s.mesh.vertices) w.vec(v);
+  }
+  for (const BodyModel& b : model.bodies) w.i32(b.shape), w.f64(b.scale);
+  const std::uint64_t h = fnv1a64(w.bytes);
+  const auto folded = static_cast<std::uint32_t>(h ^ (h >> 32));
+  return folded == 0 ? 1 : folded;
+}
+
+bool same_grains(const Checkpoint& c, const Model& model) {
+  return c.grains == 0 || c.grains == grains_fingerprint(model);
+}
+
 std::vector<std::uint8_t> encode_checkpoint(const State& state, std::span<const std::uint8_t> protocol,
-                                            std::uint64_t config_hash) {
+                                            std::uint64_t config_hash, std::uint32_t grains) {
   Writer p;
   p.u64(config_hash);
   p.f64(state.time);
@@ -173,7 +191,7 @@ std::vector<std::uint8_t> encode_checkpoint(const State& state, std::span<const 
   Writer file;
   file.bytes.assign(std::begin(kMagic), std::end(kMagic));
   file.u32(kCheckpointVersion);
-  file.u32(0);
+  file.u32(grains);
   file.u64(p.bytes.size());
   file.u64(fnv1a64(p.bytes));
   file.bytes.insert(file.bytes.end(), p.bytes.begin(), p.bytes.end());
@@ -192,7 +210,7 @@ Checkpoint decode_checkpoint(std::span<const std::uint8_t> bytes, const std::str
                 "grainlab that wrote it, or start the run again without --resume.",
                 source_name, version, kVersionWithoutPieces, kCheckpointVersion);
   const bool with_pieces = version > kVersionWithoutPieces;
-  header.u32();  // reserved
+  const std::uint32_t grains = header.u32();
   const std::uint64_t size = header.u64();
   const std::uint64_t checksum = header.u64();
   if (bytes.size() - kHeaderSize != size)
@@ -207,6 +225,7 @@ Checkpoint decode_checkpoint(std::span<const std::uint8_t> bytes, const std::str
 
   Reader r = checkpoint_reader(payload, source_name);
   Checkpoint c;
+  c.grains = grains;
   c.config_hash = r.u64();
   State& s = c.state;
   s.time = r.f64();
@@ -248,8 +267,8 @@ Checkpoint decode_checkpoint(std::span<const std::uint8_t> bytes, const std::str
 }
 
 void save_checkpoint(const std::filesystem::path& path, const State& state, std::span<const std::uint8_t> protocol,
-                     std::uint64_t config_hash) {
-  const std::vector<std::uint8_t> bytes = encode_checkpoint(state, protocol, config_hash);
+                     std::uint64_t config_hash, std::uint32_t grains) {
+  const std::vector<std::uint8_t> bytes = encode_checkpoint(state, protocol, config_hash, grains);
   write_file_atomically(path, {reinterpret_cast<const char*>(bytes.data()), bytes.size()});
 }
 

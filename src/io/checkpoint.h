@@ -3,12 +3,20 @@
 // bytes (its phase, controller state), and the hash of the config that made
 // it. Binary, little-endian, exact (raw IEEE bits), written atomically.
 //
-// Layout: magic "GLCKPT\r\n" (8 bytes), format version (u32), reserved (u32),
-// payload size (u64), FNV-1a 64 checksum of the payload (u64), payload. The
-// payload is the config hash, the State and the protocol bytes; see
-// checkpoint.cpp for the field order.
+// Layout: magic "GLCKPT\r\n" (8 bytes), format version (u32), the grains'
+// fingerprint (u32; 0 in files written before session 17: unknown), payload
+// size (u64), FNV-1a 64 checksum of the payload (u64), payload. The payload
+// is the config hash, the State and the protocol bytes; see checkpoint.cpp
+// for the field order.
+//
+// The config hash says which config made the run; the grains' fingerprint
+// says which grains this grainlab made from it. The grains are made again
+// from the config when a run resumes (generated, or imported and
+// decomposed), so a grainlab whose generator changed would otherwise
+// resume on other grains without a word.
 #pragma once
 
+#include "dynamics/model.h"
 #include "dynamics/state.h"
 #include "lab/direct_shear_spec.h"
 
@@ -26,7 +34,17 @@ struct Checkpoint {
   State state;
   std::vector<std::uint8_t> protocol;  // opaque bytes of the lab protocol
   std::uint64_t config_hash = 0;       // config_hash() of the run's spec
+  std::uint32_t grains = 0;            // grains_fingerprint() of its Model; 0: not recorded
 };
+
+// A fingerprint of the grains of a Model: each shape's kind, volume,
+// moments, radii and surface vertices (raw bits), each body's shape and
+// scale; not the materials (a specimen may be sheared with another). Never 0.
+std::uint32_t grains_fingerprint(const Model& model);
+
+// Whether a checkpoint's grains are `model`'s: the same fingerprint, or one
+// not recorded (an older file).
+bool same_grains(const Checkpoint& c, const Model& model);
 
 // Current checkpoint format version; files of another version are refused.
 // 2: candidate pairs (warm-start caches) and contacts (a, b, sub-contact) stored apart;
@@ -41,14 +59,14 @@ std::uint64_t specimen_hash(const DirectShearSpec& spec);
 
 // Writes a checkpoint atomically (RunError on failure).
 void save_checkpoint(const std::filesystem::path& path, const State& state, std::span<const std::uint8_t> protocol,
-                     std::uint64_t config_hash);
+                     std::uint64_t config_hash, std::uint32_t grains = 0);
 
 // Reads a checkpoint; throws InputError for a missing, truncated, corrupted or wrong-version file.
 Checkpoint load_checkpoint(const std::filesystem::path& path);
 
 // The checkpoint file's bytes (save_checkpoint writes exactly these).
 std::vector<std::uint8_t> encode_checkpoint(const State& state, std::span<const std::uint8_t> protocol,
-                                            std::uint64_t config_hash);
+                                            std::uint64_t config_hash, std::uint32_t grains = 0);
 // Decodes checkpoint bytes; source_name is used in messages.
 Checkpoint decode_checkpoint(std::span<const std::uint8_t> bytes, const std::string& source_name);
 

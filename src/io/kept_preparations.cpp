@@ -61,7 +61,7 @@ double KeptPreparations::restore(DirectShearTest& test, const std::string& name,
   const fs::path f = file(name);
   if (!fs::exists(f)) return -1;
   Checkpoint ck = load_checkpoint(f);
-  if (ck.config_hash != kept_preparation_key(name, prepared)) return -1;
+  if (ck.config_hash != kept_preparation_key(name, prepared) || !same_grains(ck, test.world().model)) return -1;
   ByteReader in(ck.protocol, f.string());
   const double wall_s = in.f64();
   test.world().state = std::move(ck.state);
@@ -75,7 +75,8 @@ void KeptPreparations::keep(const DirectShearTest& test, const std::string& name
   protocol.f64(wall_s);
   protocol.raw(test.save());
   fs::create_directories(folder_);
-  save_checkpoint(file(name), test.world().state, protocol.bytes, kept_preparation_key(name, prepared));
+  save_checkpoint(file(name), test.world().state, protocol.bytes, kept_preparation_key(name, prepared),
+                  grains_fingerprint(test.world().model));
 }
 
 void KeptPreparations::drop(const std::string& name) {

@@ -11,7 +11,8 @@
 // deposition friction; for a trial, the whole config but the output, the
 // thread count and the loading (shear, oedometer, triaxial). Its protocol
 // bytes are the wall seconds spent so far (f64) followed by the
-// DirectShearTest's own bytes. A file with another key is left alone and
+// DirectShearTest's own bytes. A file with another key, or written for
+// other grains (checkpoint.h, grains_fingerprint), is left alone and
 // written over by the next keep.
 //
 // Index preparations are dropped once index_densities.json holds them;

@@ -59,6 +59,14 @@ int wait_exit(pid_t pid) {
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
+// A copy of checkpoint `from` at `to` whose grains' fingerprint (header
+// bytes 12-15, outside the payload's checksum) says other grains.
+void copy_with_other_grains(const fs::path& from, const fs::path& to) {
+  std::string bytes = read_file(from);
+  bytes[12] = static_cast<char>(bytes[12] ^ 0x5a);
+  std::ofstream(to, std::ios::binary) << bytes;
+}
+
 std::size_t lines_in(const fs::path& p) {
   if (!fs::exists(p)) return 0;
   const std::string s = read_file(p);
@@ -215,6 +223,23 @@ TEST_F(Resume, ARunFromAnotherRunsSpecimenShearsThatSpecimen) {
   EXPECT_NE(read_file(dir_ / "seed4.log").find("prepared with other grains, box, seed"), std::string::npos)
       << read_file(dir_ / "seed4.log");
   EXPECT_FALSE(fs::exists(dir_ / "seed4"));
+  // The same config, but grains this grainlab would make otherwise (its
+  // generator changed since the specimen, or the checkpoint, was written).
+  copy_with_other_grains(specimen, dir_ / "other_grains.bin");
+  const std::string other = "from = \"" + (dir_ / "other_grains.bin").string() + "\"";
+  EXPECT_NE(wait_exit(start_run(config("other", "", other), false, dir_ / "other.log")), 0);
+  EXPECT_NE(read_file(dir_ / "other.log").find("prepared with other grains than this grainlab makes"),
+            std::string::npos)
+      << read_file(dir_ / "other.log");
+  EXPECT_FALSE(fs::exists(dir_ / "other"));
+  const fs::path checkpoint = dir_ / "first" / "checkpoint.bin";
+  copy_with_other_grains(checkpoint, checkpoint);
+  const std::string before = read_file(dir_ / "first" / "series.csv");
+  EXPECT_NE(wait_exit(start_run(config("first"), true, dir_ / "first_again.log")), 0);
+  EXPECT_NE(read_file(dir_ / "first_again.log").find("written for other grains than this grainlab makes"),
+            std::string::npos)
+      << read_file(dir_ / "first_again.log");
+  EXPECT_EQ(read_file(dir_ / "first" / "series.csv"), before);  // nothing lost
   const std::string missing = "from = \"" + (dir_ / "nowhere" / "specimen.bin").string() + "\"";
   EXPECT_NE(wait_exit(start_run(config("missing", "", missing), false, dir_ / "missing.log")), 0);
   EXPECT_NE(read_file(dir_ / "missing.log").find("no such file"), std::string::npos) << read_file(dir_ / "missing.log");

@@ -1,6 +1,7 @@
 // Checkpoints: a State with random contents comes back bit for bit; damaged,
 // truncated and wrong-version files are refused with a clear message.
 #include "core/bytes.h"
+#include "geometry/primitives.h"
 #include "io/checkpoint.h"
 
 #include "core/error.h"
@@ -201,7 +202,7 @@ TEST(Checkpoint, AnyFlippedByteIsRefused) {
   for (int trial = 0; trial < 200; ++trial) {
     std::vector<std::uint8_t> bad = good;
     const std::size_t at = trial < 32 ? static_cast<std::size_t>(trial) : rng() % bad.size();
-    if (at >= 12 && at < 16) continue;  // the reserved word is not checked
+    if (at >= 12 && at < 16) continue;  // the grains' fingerprint: checked against the grains (same_grains)
     bad[at] ^= static_cast<std::uint8_t>(1u << (rng() % 8));
     EXPECT_THROW(decode_checkpoint(bad, "ck.bin"), InputError) << "byte " << at;
   }
@@ -263,6 +264,34 @@ TEST(Checkpoint, APairsPieceCachesOutsideTheirListAreRefused) {
   s.piece_caches.resize(3);
   s.pairs[0].pieces = 3;
   EXPECT_NE(refusal(encode_checkpoint(s, {}, 0)).find("piece caches"), std::string::npos);
+}
+
+TEST(Checkpoint, TheGrainsFingerprintTravelsWithTheFileAndTellsOtherGrains) {
+  Model m;
+  const Index cube = m.add_mesh_shape(box_mesh(1e-3, 1e-3, 1e-3), "cube");
+  const Index ball = m.add_sphere_shape(5e-4);
+  m.add_material(Material{});
+  const auto body = [&](Index shape, double scale) {
+    BodyModel b;
+    b.shape = shape, b.scale = scale;
+    m.bodies.push_back(b);
+  };
+  body(cube, 1.0), body(ball, 1.0);
+  const std::uint32_t f = grains_fingerprint(m);
+  EXPECT_NE(f, 0u);
+  const Checkpoint c = decode_checkpoint(encode_checkpoint(State{}, {}, 3, f), "ck.bin");
+  EXPECT_EQ(c.grains, f);
+  EXPECT_TRUE(same_grains(c, m));
+  Model scaled = m;
+  scaled.bodies[1].scale = 1.01;
+  EXPECT_FALSE(same_grains(c, scaled));
+  Model moved = m;
+  moved.shapes[cube].mesh.vertices[0].x() += 1e-9;  // a generator that moved one vertex by a nanometre
+  EXPECT_FALSE(same_grains(c, moved));
+  Model other_material = m;
+  other_material.materials[0].friction = 0.5;  // a specimen may be sheared with another material
+  EXPECT_TRUE(same_grains(c, other_material));
+  EXPECT_TRUE(same_grains(decode_checkpoint(encode_checkpoint(State{}, {}, 3), "old.bin"), moved));  // not recorded
 }
 
 TEST(Checkpoint, ConfigHashFollowsTheConfig) {

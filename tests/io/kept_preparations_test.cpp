@@ -18,6 +18,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 
 using namespace grainlab;
 
@@ -109,6 +110,22 @@ TEST(KeptPreparations, AStoppedTrialGoesOnToTheSameSpecimenAndAFinishedOneIsTake
   // Another friction does not take it.
   PreparationTrial other;
   EXPECT_THROW(trial_preparation(spec, 0.06, other, &finished), Stopped);
+
+  // Written for other grains (the generator changed since): not taken back.
+  {
+    DirectShearSpec s = spec;
+    s.specimen.deposition_friction = mu;
+    DirectShearTest fresh(s);
+    EXPECT_GE(KeptPreparations(dir.path).restore(fresh, trial_preparation_name(mu), s), 0);
+    std::fstream f(file, std::ios::in | std::ios::out | std::ios::binary);
+    f.seekg(12);
+    const char byte = static_cast<char>(f.get() ^ 0x5a);
+    f.seekp(12);
+    f.put(byte);
+    f.close();
+    DirectShearTest other(s);
+    EXPECT_LT(KeptPreparations(dir.path).restore(other, trial_preparation_name(mu), s), 0);
+  }
 
   drop_kept_trials(dir.path);
   EXPECT_FALSE(std::filesystem::exists(file));
