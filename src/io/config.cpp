@@ -74,7 +74,9 @@ const std::array kFields{
     GL_FIELD("box", "length", box.length, "m, along the shear direction x"),
     GL_FIELD("box", "width", box.width, "m, along y"),
     GL_FIELD("box", "height", box.height, "m, target specimen height after preparation"),
-    GL_FIELD("box", "gap", box.gap, "m, opening between the lower and upper halves (direct shear)"),
+    GL_FIELD("box", "gap", box.gap,
+             "m, opening between the lower and upper halves (direct shear; closed while the specimen is made, "
+             "opened when the shear begins)"),
 
     GL_FIELD("specimen", "relative_density", specimen.relative_density, "target Dr = (e_max - e)/(e_max - e_min) on specimen.indices, in [0, 1]"),
     GL_FIELD("specimen", "indices", specimen.indices, "\"own\": Dr on the grains' own index voids (own_e_min/own_e_max; measured when 0) | \"lab\": on the lab's e_min/e_max"),

@@ -35,6 +35,17 @@ std::string most_energetic_grain(const World& w) {
                      total > 0 ? 100 * worst_ke / total : 0.0, b.v.norm(), b.w.norm(), contacts);
 }
 
+// A grain's smallest extent along its principal axes (m): how thin a slot it
+// can pass edge-on.
+double thinnest_extent(const World& w, Index g) {
+  const BodyModel& b = w.model.bodies[g];
+  const Shape& s = w.model.shapes[b.shape];
+  if (s.mesh.vertices.empty()) return 2 * s.bounding_radius * b.scale;
+  Vec3 lo = s.mesh.vertices[0], hi = lo;
+  for (const Vec3& v : s.mesh.vertices) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
+  return (hi - lo).minCoeff() * b.scale;
+}
+
 }  // namespace
 
 const char* shear_phase_name(ShearPhase p) {
@@ -121,6 +132,7 @@ void DirectShearTest::enter(ShearPhase p) {
   apply_phase_overrides();
   if (p == ShearPhase::Compact) lower_cap_onto_grains(world_, Cap, mean_diameter());
   if (p == ShearPhase::Shear) {
+    open_shear_box_gap(world_, spec_.box);
     p_.cap_z_at_shear = world_.state.walls[Cap].x.z();
     p_.upper_x_at_shear = world_.state.walls[UpperXm].x.x();
     p_.next_sample_strain = 0;
@@ -155,6 +167,25 @@ bool DirectShearTest::check_rest(ShearPhase p) {
   return rest;
 }
 
+void DirectShearTest::check_grains_inside() const {
+  const Index g = grain_outside_shear_box(world_);
+  if (g < 0) return;
+  const Vec3 x = world_.state.bodies[g].x * 1e3;
+  const double thin = thinnest_extent(world_, g);
+  const bool shearing = p_.phase == ShearPhase::Shear;
+  throw RunError(fmt::format(
+      "grain {} left the shear box in the {} phase (step {}): its centre is at ({:.2f}, {:.2f}, {:.2f}) mm, "
+      "beyond the box's walls (inner box {:.2f} x {:.2f} mm, floor at z = 0). It is {:.3f} mm thick at its "
+      "thinnest{}. {}",
+      g, phase_name(), world_.state.step, x.x(), x.y(), x.z(), spec_.box.length * 1e3, spec_.box.width * 1e3,
+      thin * 1e3,
+      shearing ? fmt::format(", against box.gap = {:.3f} mm between the halves", spec_.box.gap * 1e3) : "",
+      shearing && thin <= spec_.box.gap
+          ? "Grains thinner than the gap are squeezed out through it: set box.gap below the thinnest grain."
+          : "A grain passes through a wall when it moves further in one step than its overlap allows: lower "
+            "numerics.time_step_fraction (or set a smaller numerics.time_step)."));
+}
+
 void DirectShearTest::check_preparation(double e_whole, double e_bulk, const char* when) const {
   if (accept_any_density_ || specimen_.scan.grains > 0) return;  // a scan's density is the scan's
   const auto& s = spec_.specimen;
@@ -187,6 +218,7 @@ bool DirectShearTest::advance(int max_steps) {
   for (int i = 0; i < max_steps && p_.phase != ShearPhase::Done; ++i) {
     world_.step(dt_);
     const ShearPhase p = p_.phase;
+    if (world_.state.step % kCheckEvery == 0) check_grains_inside();
     if (p == ShearPhase::Shear) {
       const bool sampled = shear_strain() + 1e-12 >= p_.next_sample_strain;
       if (sampled) record_sample();

@@ -140,6 +140,8 @@ class DirectShearTest final : public LabTest {
   void enter(ShearPhase p);
   void apply_phase_overrides();
   bool check_rest(ShearPhase p);
+  // Throws RunError naming the grain, where and when, if one left the box.
+  void check_grains_inside() const;
   // Throws RunError (what was reached, how to fix it) if the whole (lab-index
   // or void-ratio target) or bulk (own-index target) void ratio misses the target.
   void check_preparation(double e_whole, double e_bulk, const char* when) const;
