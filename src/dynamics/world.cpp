@@ -152,7 +152,7 @@ void World::prepare() {
   aabb_.resize(n);
   force_.assign(n, Vec3::Zero());
   torque_.assign(n, Vec3::Zero());
-  kinetic_.assign(n, 0.0);
+  motion_.assign(n, 0.0);
   if (settings.skin <= 0) {
     double r_min = std::numeric_limits<double>::infinity();
     for (const BodyModel& b : model.bodies) r_min = std::min(r_min, b.radius);
@@ -434,7 +434,8 @@ void World::collide_list(std::vector<CandidatePair>& pairs, bool walls, std::vec
   // Fill in parallel; springs carried from last step's contact with the same
   // (a, b, sub), found in the sorted old list where the pair's hint says (if
   // it holds) or by binary search.
-  next_contacts_.resize(total);
+  std::vector<Contact>& next = next_contacts_[walls ? 1 : 0];
+  next.resize(total);
   parallel_for(
       static_cast<std::ptrdiff_t>(n),
       [&](std::ptrdiff_t k) {
@@ -448,7 +449,7 @@ void World::collide_list(std::vector<CandidatePair>& pairs, bool walls, std::vec
         std::size_t old = hint == CandidatePair::kNoContacts ? contacts.size()
                                                              : first_contact_of(contacts, pair.a, pair.b, hint);
         for (std::size_t i = begin; i < end; ++i) {
-          Contact& c = next_contacts_[i];  // written in place: every field is set
+          Contact& c = next[i];  // written in place: every field is set
           c.a = pair.a;
           c.b = pair.b;
           c.sub = res[i - begin].sub;
@@ -462,7 +463,7 @@ void World::collide_list(std::vector<CandidatePair>& pairs, bool walls, std::vec
         }
       },
       64, settings.threads, spheres ? settings.serial_below : 0);
-  contacts.swap(next_contacts_);
+  contacts.swap(next);
 }
 
 void World::narrowphase() {
@@ -551,25 +552,26 @@ void World::integrate(double dt) {
     s.x += dt * s.v;
     const bool isotropic = model.shapes[m.shape].isotropic;
     integrate_rotation(s.q, s.w, torque_[i], m.inertia, m.inv_inertia, dt, isotropic);
-    kinetic_[i] = kinetic_energy_of(m, s);
+    motion_[i] = s.v.squaredNorm() + s.w.squaredNorm();
   };
   parallel_for(static_cast<std::ptrdiff_t>(n), body, 256, settings.threads, settings.serial_below);
   for (WallState& w : state.walls) w.x += dt * w.v;
 }
 
 void World::bookkeeping() {
-  double ke = 0;
-  for (double k : kinetic_) ke += k;
+  double motion = 0;
+  for (double m : motion_) motion += m;
   profile.contacts += static_cast<std::int64_t>(contact_count());
-  if (!std::isfinite(ke)) {
+  if (!std::isfinite(motion)) {
     for (std::size_t i = 0; i < state.bodies.size(); ++i) {
-      if (!state.bodies[i].x.allFinite() || !state.bodies[i].v.allFinite())
+      const BodyState& b = state.bodies[i];
+      if (!b.x.allFinite() || !b.v.allFinite() || !b.w.allFinite())
         throw RunError(fmt::format(
-            "step {} (t = {:.6g} s): grain {} has a non-finite position or velocity; the run went "
-            "unstable. Reduce the time step or check the contact stiffness",
+            "step {} (t = {:.6g} s): grain {} has a non-finite position, velocity or angular velocity; the "
+            "run went unstable. Reduce the time step or check the contact stiffness",
             state.step, state.time, i));
     }
-    throw RunError(fmt::format("step {}: kinetic energy is not finite; the run went unstable", state.step));
+    throw RunError(fmt::format("step {}: the grains' speeds overflow; the run went unstable", state.step));
   }
 }
 

@@ -135,9 +135,13 @@ class World {
   void assign_piece_caches(std::vector<CandidatePair>& pairs, bool walls, std::vector<PairCache>& pool);
   std::vector<SubContact> sub_results_;  // narrowphase: sub_contact_slots() per pair
   std::vector<int> sub_counts_;          // narrowphase: touching results per pair, then offsets
-  std::vector<Contact> next_contacts_;   // the contact list being compacted
+  // The contact lists being compacted, grains' [0] and walls' [1]: one each,
+  // so that neither is value-initialised anew every step after the other.
+  std::vector<Contact> next_contacts_[2];
   std::vector<Vec3> force_, torque_;
-  std::vector<double> kinetic_;
+  // |v|^2 + |w|^2 of each body after the step: finite exactly when its
+  // velocities are (the step's non-finite check; cheaper than its energy).
+  std::vector<double> motion_;
 };
 
 }  // namespace grainlab

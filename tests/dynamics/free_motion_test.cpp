@@ -1,4 +1,5 @@
 // Bodies with no contacts: free fall and torque-free rotation.
+#include "core/error.h"
 #include "core/rng.h"
 #include "dynamics/integrator.h"
 #include "dynamics/world.h"
@@ -8,6 +9,8 @@
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
+#include <string>
 
 using namespace grainlab;
 
@@ -85,5 +88,28 @@ TEST(FreeMotion, HalfwayIsSlerpAtOneHalf) {
     if (t % 2) q1.coeffs() = -q1.coeffs();  // the same rotation, the other sign
     const Quat h = halfway(q0, q1), ref = q0.slerp(0.5, q1);
     EXPECT_LT(std::min((h.coeffs() - ref.coeffs()).norm(), (h.coeffs() + ref.coeffs()).norm()), 1e-15) << t;
+  }
+}
+
+TEST(FreeMotion, ANonFiniteVelocityStopsTheStepNamingTheGrain) {
+  // The step's check reads each body's |v|^2 + |w|^2: a NaN or infinite
+  // velocity or angular velocity of any grain stops it with that grain named.
+  for (int which = 0; which < 3; ++which) {
+    World w;
+    const Index s = w.model.add_sphere_shape(1e-3);
+    for (int i = 0; i < 3; ++i) w.add_body(s, 0, 1.0, Vec3(0.01 * i, 0, 0));
+    w.step(1e-7);
+    BodyState& b = w.state.bodies[2];
+    if (which == 0) b.v.x() = std::nan("");
+    if (which == 1) b.w.z() = std::numeric_limits<double>::infinity();
+    if (which == 2) b.v.y() = 1e300;  // finite, but its square overflows: caught, though every value is finite
+    try {
+      w.step(1e-7);
+      FAIL() << "no error, case " << which;
+    } catch (const RunError& e) {
+      const std::string what = e.what();
+      const char* expected = which == 2 ? "speeds overflow" : "grain 2 has a non-finite";
+      EXPECT_NE(what.find(expected), std::string::npos) << what;
+    }
   }
 }
