@@ -3,6 +3,7 @@
 #include "lab/direct_shear.h"
 
 #include "core/error.h"
+#include "geometry/shape_metrics.h"
 #include "lab/scanned_specimen.h"
 
 #include <algorithm>
@@ -40,10 +41,8 @@ std::string most_energetic_grain(const World& w) {
 double thinnest_extent(const World& w, Index g) {
   const BodyModel& b = w.model.bodies[g];
   const Shape& s = w.model.shapes[b.shape];
-  if (s.mesh.vertices.empty()) return 2 * s.bounding_radius * b.scale;
-  Vec3 lo = s.mesh.vertices[0], hi = lo;
-  for (const Vec3& v : s.mesh.vertices) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
-  return (hi - lo).minCoeff() * b.scale;
+  if (s.mesh.vertices.empty()) return 2 * s.bounding_radius * b.scale;  // a sphere
+  return principal_frame(s.mesh).extents[2] * b.scale;
 }
 
 }  // namespace
