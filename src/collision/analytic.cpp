@@ -7,19 +7,6 @@
 
 namespace grainlab {
 
-ContactResult collide(const SphereShape& a, const SphereShape& b) {
-  ContactResult r;
-  const Vec3 d = b.pos - a.pos;
-  const double dist = d.norm();
-  // Coincident centres: any direction is a minimum-translation direction.
-  r.normal = dist > 1e-300 ? Vec3(d / dist) : Vec3::UnitZ();
-  r.depth = a.radius + b.radius - dist;
-  r.touching = r.depth > 0;
-  // Midway between the surface point of A (a.pos + ra n) and of B (b.pos - rb n).
-  r.point = 0.5 * (a.pos + b.pos) + 0.5 * (a.radius - b.radius) * r.normal;
-  return r;
-}
-
 ContactResult collide(const PlaneShape& a, const SphereShape& b) {
   ContactResult r;
   r.normal = a.normal;

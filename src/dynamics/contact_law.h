@@ -13,7 +13,9 @@
 //     name, parameters              config name; the Material fields it reads, with units
 //     validate(Material)            throws InputError for an impossible value of those fields
 //     mix(Material, Material)       PairCoefficients of a material pair (friction is mixed here)
-//     at(pair, delta, R*, m*)       K_n, C_n, K_t, C_t at this overlap (inline: the hot path)
+//     at(pair, delta, R*, m*)       K_n, C_n, K_t, C_t at this overlap (inline: the hot path;
+//                                   a template over the number type, root() for square roots,
+//                                   so that four contacts go at once: contact_lanes.h)
 //     stiffness(LawCoefficients)    d f_n / d delta of the elastic force, from at()'s coefficients
 //     tangent_stiffness(f_n, delta) the same, from a contact's elastic force and overlap
 //     elastic_energy(f_n, delta)    integral of the elastic f_n from 0 to delta
@@ -31,10 +33,17 @@
 
 namespace grainlab {
 
-// A law's coefficients at the current overlap.
-struct LawCoefficients {
-  double k_n, c_n, k_t, c_t;
+// A law's coefficients at the current overlap (T: double, or four contacts'
+// side by side, dynamics/contact_lanes.h).
+template <typename T>
+struct LawCoefficientsOf {
+  T k_n, c_n, k_t, c_t;
 };
+using LawCoefficients = LawCoefficientsOf<double>;
+
+// The square root of a double; the laws call root() so that their at() is
+// written once for one contact and for four (contact_lanes.h overloads it).
+inline double root(double x) { return std::sqrt(x); }
 
 // What the engine and the lab may ask of a registered law (the law's static
 // functions, behind pointers; none of them is called per contact per step).
@@ -108,12 +117,13 @@ Vec3 contact_force(const PairCoefficients& p, const ContactKinematics& c, double
   const Vec3 v_t = c.v_rel - v_n * c.normal;
   const double f_n = std::max(0.0, c.gain * k.k_n * c.delta - k.c_n * v_n);
 
-  // Keep the spring in the tangent plane, with its length.
-  const double len = xi.norm();
-  if (len > 0) {
+  // Keep the spring in the tangent plane, with its length (one square root:
+  // of the ratio of the squared lengths).
+  const double len2 = xi.squaredNorm();
+  if (len2 > 0) {
     xi -= xi.dot(c.normal) * c.normal;
-    const double len_t = xi.norm();
-    xi = len_t > 1e-300 ? Vec3(xi * (len / len_t)) : Vec3::Zero();
+    const double len_t2 = xi.squaredNorm();
+    xi = len_t2 > 1e-300 ? Vec3(xi * std::sqrt(len2 / len_t2)) : Vec3::Zero();
   }
   xi += v_t * dt;
 

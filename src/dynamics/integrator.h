@@ -33,9 +33,11 @@ namespace grainlab {
 inline Quat rotation_quaternion(const Vec3& phi) {
   const double a2 = phi.squaredNorm();
   if (a2 < 1e-2) {  // |phi| < 0.1: the series above
+    // Products with the rounded reciprocals, not divisions: the same value to
+    // within an ulp, at a fraction of the cost (a body per step each).
     const double x2 = 0.25 * a2;
-    const double c = 1 - x2 / 2 * (1 - x2 / 12 * (1 - x2 / 30 * (1 - x2 / 56)));
-    const double s = 0.5 * (1 - x2 / 6 * (1 - x2 / 20 * (1 - x2 / 42 * (1 - x2 / 72))));
+    const double c = 1 - x2 * 0.5 * (1 - x2 * (1.0 / 12) * (1 - x2 * (1.0 / 30) * (1 - x2 * (1.0 / 56))));
+    const double s = 0.5 * (1 - x2 * (1.0 / 6) * (1 - x2 * (1.0 / 20) * (1 - x2 * (1.0 / 42) * (1 - x2 * (1.0 / 72)))));
     return Quat(c, s * phi.x(), s * phi.y(), s * phi.z());
   }
   const double angle = std::sqrt(a2);

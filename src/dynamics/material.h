@@ -25,11 +25,14 @@ struct Material {
 };
 
 // Coefficients of one material pair, mixed once when the model is built.
-// The law that mixes them says what each slot holds.
-struct PairCoefficients {
-  double k_n = 0, k_t = 0;          // user forms: as in Material; material form: E*, G*
-  double gamma_n = 0, gamma_t = 0;  // user forms: as in Material; material form: beta (both)
-  double friction = 0;
+// The law that mixes them says what each slot holds. T is double, or four
+// pairs' values side by side (dynamics/contact_lanes.h).
+template <typename T>
+struct PairCoefficientsOf {
+  T k_n{}, k_t{};          // user forms: as in Material; material form: E*, G*
+  T gamma_n{}, gamma_t{};  // user forms: as in Material; material form: beta, beta sqrt(4 G*/E*)
+  T friction{};
 };
+using PairCoefficients = PairCoefficientsOf<double>;
 
 }  // namespace grainlab

@@ -117,7 +117,8 @@ struct State {
   bool rebuild_pairs = true;
   // A world of spheres keeps its wall-grain candidates while no wall has
   // moved by half the skin (World::broadphase): the wall poses they were
-  // found at. Not checkpointed: empty means find them again.
+  // found at (checkpointed since format version 7); empty means find them
+  // again.
   std::vector<Vec3> wall_x_at_rebuild;
   std::vector<Quat> wall_q_at_rebuild;
 };

@@ -12,6 +12,7 @@
 #include "core/error.h"
 #include "core/parallel.h"
 #include "core/timer.h"
+#include "dynamics/contact_lanes.h"
 #include "dynamics/contact_law.h"
 #include "dynamics/laws/registry.h"
 #include "dynamics/integrator.h"
@@ -158,8 +159,15 @@ void World::prepare() {
     for (const BodyModel& b : model.bodies) r_min = std::min(r_min, b.radius);
     settings.skin = std::isfinite(r_min) ? 0.2 * r_min : 1e-3;
   }
-  state.wall_x_at_rebuild.clear();  // the model may have changed: find wall candidates again
-  state.wall_q_at_rebuild.clear();
+  // A later preparation follows a change of the model (bodies, walls, sizes):
+  // find the wall candidates again. The first takes the State as given: a
+  // restored checkpoint carries the wall poses its kept candidates were found
+  // at, so a resumed run keeps the same list as the run that wrote it.
+  if (prepared_once_) {
+    state.wall_x_at_rebuild.clear();
+    state.wall_q_at_rebuild.clear();
+  }
+  prepared_once_ = true;
   // No forced rebuild: a restored State carries its own candidate pairs, and
   // added bodies make x_at_rebuild the wrong size, which forces one.
   checked_dt_ = -1;
@@ -222,10 +230,13 @@ void World::classify_shapes() {
 void World::compute_bounds() {
   const std::size_t n = state.bodies.size();
   const bool have_ref = state.x_at_rebuild.size() == n;
+  const bool spheres = spheres_only();
+  sphere_poses_.resize(spheres ? n : 0);
   const double max_sq = parallel_max(
       static_cast<std::ptrdiff_t>(n),
       [&](std::ptrdiff_t i) {
         rot_[i] = state.bodies[i].q.toRotationMatrix();
+        if (spheres) sphere_poses_[i] = {state.bodies[i].x, model.bodies[i].radius};
         return have_ref ? (state.bodies[i].x - state.x_at_rebuild[i]).squaredNorm() : 0.0;
       },
       0.0, settings.serial_below, settings.threads);
@@ -282,7 +293,10 @@ void World::broadphase() {
       CandidatePair pc;
       pc.a = static_cast<Index>(w);
       pc.b = static_cast<Index>(i);
-      pc.cache.dir = x - wx;
+      // The GJK warm start of a faceted grain; a sphere's wall routines read
+      // no cache, so theirs stays the default: then a kept list and one found
+      // anew after a restore hold the same bits whenever each pair was found.
+      if (!keep) pc.cache.dir = x - wx;
       scratch_.push_back(pc);
     }
   }
@@ -367,23 +381,15 @@ int World::collide_pair(CandidatePair& pc, SubContact* out) {
   return collide_shapes(a, b, pc.cache, out, piece_block(state.piece_caches, pc, a, b));
 }
 
-int World::collide_spheres(CandidatePair& pc, SubContact* out) const {
-  // collide_pair for two spheres, without building posed shapes or going
-  // through the shape-pair table: what routines::sphere_sphere computes,
-  // written only if touching.
-  const BodyModel& ma = model.bodies[pc.a];
-  const BodyModel& mb = model.bodies[pc.b];
-  const Vec3& xa = state.bodies[pc.a].x;
-  const Vec3& xb = state.bodies[pc.b].x;
-  const double reach = ma.bounding_radius + mb.bounding_radius;
-  if ((xb - xa).squaredNorm() > reach * reach) {
-    pc.cache.warm = false;  // as collide_pair
-    return 0;
-  }
-  const ContactResult r = collide(SphereShape{xa, ma.radius}, SphereShape{xb, mb.radius});
-  if (!r.touching) return 0;
-  out[0] = {r, 0};
-  return 1;
+inline ContactResult World::collide_spheres(const CandidatePair& pc) const {
+  // collide_pair for two spheres, from their compact poses, without building
+  // posed shapes or going through the shape-pair table: what
+  // routines::sphere_sphere computes. A sphere pair's cache is never warm.
+  const SpherePose& a = sphere_poses_[pc.a];
+  const SpherePose& b = sphere_poses_[pc.b];
+  const double reach = a.radius + b.radius;
+  if ((b.x - a.x).squaredNorm() > reach * reach) return ContactResult{};
+  return collide(SphereShape{a.x, a.radius}, SphereShape{b.x, b.radius});
 }
 
 int World::collide_wall(CandidatePair& pc, SubContact* out) {
@@ -395,10 +401,11 @@ void World::collide_list(std::vector<CandidatePair>& pairs, bool walls, std::vec
   const std::size_t n = pairs.size();
   // Each pair collides into a per-thread buffer and copies its touching
   // results, in increasing sub-contact id, into its own fixed-capacity slot,
-  // in parallel (a pair of spheres writes its slot directly). Most pairs do
+  // in parallel. Most pairs do
   // not touch and write nothing but their count. Slots per pair: one unless
   // a compound shape can touch in several places (only the compound routines
-  // write more than one result), so a world of convex grains writes densely.
+  // write more than one result), so a world of convex grains writes densely;
+  // a pair of spheres is only counted here, its geometry made in the fill.
   const std::size_t slots = static_cast<std::size_t>(sub_contact_slots());
   if (sub_results_.size() < n * slots) sub_results_.resize(n * slots);
   sub_counts_.resize(n + 1);
@@ -407,8 +414,8 @@ void World::collide_list(std::vector<CandidatePair>& pairs, bool walls, std::vec
       static_cast<std::ptrdiff_t>(n),
       [&](std::ptrdiff_t k) {
         SubContact* out = &sub_results_[static_cast<std::size_t>(k) * slots];
-        if (spheres && !walls) {
-          sub_counts_[k] = collide_spheres(pairs[k], out);
+        if (spheres && !walls) {  // only counted: the fill below computes the geometry again
+          sub_counts_[k] = collide_spheres(pairs[k]).touching;
           return;
         }
         thread_local SubContact local[kMaxSubContacts];  // constructed once per thread, not per pair
@@ -452,8 +459,13 @@ void World::collide_list(std::vector<CandidatePair>& pairs, bool walls, std::vec
           Contact& c = next[i];  // written in place: every field is set
           c.a = pair.a;
           c.b = pair.b;
-          c.sub = res[i - begin].sub;
-          c.geo = res[i - begin].geo;
+          if (spheres && !walls) {
+            c.sub = 0;
+            c.geo = collide_spheres(pair);
+          } else {
+            c.sub = res[i - begin].sub;
+            c.geo = res[i - begin].geo;
+          }
           while (old < contacts.size() && contacts[old] < c) ++old;
           const bool carried = old < contacts.size() && contacts[old].same_key(c);
           c.xi = carried ? contacts[old].xi : Vec3::Zero();
@@ -474,47 +486,84 @@ void World::narrowphase() {
 
 namespace {
 
-// Evaluates the contact law for one pair whose sides move with relative
-// velocity v_rel at the contact point and relative angular velocity w_rel.
-template <typename Law>
-void evaluate(Contact& pc, const PairCoefficients& coeffs, const Vec3& v_rel, const Vec3& w_rel,
-              double m_eff, double r_eff, double dt) {
-  const ContactKinematics c{pc.geo.normal, pc.geo.depth, v_rel, m_eff, r_eff, pc.geo.gain};
-  LawCoefficients law;
-  pc.force = contact_force<Law>(coeffs, c, dt, pc.xi, &pc.normal_force, &law);
-  // The faceted contact's torque beyond the force at the point: twist times u'(D).
-  pc.torque = patch_damping_torque(law.c_n, pc.geo.spread, c.normal, w_rel) +
-              (law.k_n * pc.geo.depth) * pc.geo.twist;
+// One contact's side of the law: its material pair, the velocity of b's
+// material point minus a's at the contact point, the relative angular
+// velocity, and the effective mass (kg) and radius (m).
+struct ContactSides {
+  const PairCoefficients* pair;
+  Vec3 v_rel, w_rel;
+  double m_eff, r_eff;
+};
+
+// Evaluates the contact law for contacts [first, first + kLanes) of `list`,
+// four at a time (contact_lanes.h; the last block's missing lanes repeat its
+// last contact and are dropped). sides(pc) gives a contact's ContactSides.
+template <typename Law, typename Sides>
+void evaluate_block(std::vector<Contact>& list, std::size_t first, double dt, const Sides& sides) {
+  Contact* pcs[kLanes];
+  Vec3 w_rel[kLanes];
+  ContactLanes c;
+  PairCoefficientsOf<Lanes> p;
+  for (int l = 0; l < kLanes; ++l) {
+    Contact& pc = list[std::min(first + static_cast<std::size_t>(l), list.size() - 1)];
+    const ContactSides s = sides(pc);
+    pcs[l] = &pc;
+    w_rel[l] = s.w_rel;
+    c.nx[l] = pc.geo.normal.x(), c.ny[l] = pc.geo.normal.y(), c.nz[l] = pc.geo.normal.z();
+    c.delta[l] = pc.geo.depth;
+    c.vx[l] = s.v_rel.x(), c.vy[l] = s.v_rel.y(), c.vz[l] = s.v_rel.z();
+    c.m_eff[l] = s.m_eff, c.r_eff[l] = s.r_eff, c.gain[l] = pc.geo.gain;
+    c.xix[l] = pc.xi.x(), c.xiy[l] = pc.xi.y(), c.xiz[l] = pc.xi.z();
+    p.k_n[l] = s.pair->k_n, p.k_t[l] = s.pair->k_t;
+    p.gamma_n[l] = s.pair->gamma_n, p.gamma_t[l] = s.pair->gamma_t, p.friction[l] = s.pair->friction;
+  }
+  const ForceLanes f = contact_force_lanes<Law>(p, c, dt);
+  for (int l = 0; l < kLanes && first + static_cast<std::size_t>(l) < list.size(); ++l) {
+    Contact& pc = *pcs[l];
+    pc.force = Vec3(f.fx[l], f.fy[l], f.fz[l]);
+    pc.normal_force = f.f_n[l];
+    pc.xi = Vec3(c.xix[l], c.xiy[l], c.xiz[l]);
+    // The faceted contact's torque beyond the force at the point: twist times u'(D).
+    pc.torque = patch_damping_torque(f.k.c_n[l], pc.geo.spread, pc.geo.normal, w_rel[l]) +
+                (f.k.k_n[l] * pc.geo.depth) * pc.geo.twist;
+  }
+}
+
+// Blocks of kLanes contacts in `list`.
+std::ptrdiff_t blocks_of(const std::vector<Contact>& list) {
+  return static_cast<std::ptrdiff_t>((list.size() + kLanes - 1) / kLanes);
 }
 
 }  // namespace
 
 template <typename Law>
 void World::forces_with(double dt) {
-  // Per contact (all touching), in parallel: the force on b at the contact point.
-  const auto grain_pair = [&](std::ptrdiff_t k) {
-    Contact& pc = state.contacts[k];
+  // Per contact (all touching), four at a time, in parallel: the force on b at the contact point.
+  const auto grain_sides = [&](const Contact& pc) {
     const BodyModel &ma = model.bodies[pc.a], &mb = model.bodies[pc.b];
     const BodyState &sa = state.bodies[pc.a], &sb = state.bodies[pc.b];
     const Vec3& p = pc.geo.point;
-    evaluate<Law>(pc, pair(ma.material, mb.material),
-                  (sb.v + sb.w.cross(p - sb.x)) - (sa.v + sa.w.cross(p - sa.x)), sb.w - sa.w,
-                  ma.mass * mb.mass / (ma.mass + mb.mass), ma.radius * mb.radius / (ma.radius + mb.radius), dt);
+    return ContactSides{&pair(ma.material, mb.material),
+                        (sb.v + sb.w.cross(p - sb.x)) - (sa.v + sa.w.cross(p - sa.x)), sb.w - sa.w,
+                        ma.mass * mb.mass / (ma.mass + mb.mass), ma.radius * mb.radius / (ma.radius + mb.radius)};
   };
-  parallel_for(static_cast<std::ptrdiff_t>(state.contacts.size()), grain_pair, 128, settings.threads,
-               settings.serial_below);
+  parallel_for(
+      blocks_of(state.contacts),
+      [&](std::ptrdiff_t k) { evaluate_block<Law>(state.contacts, static_cast<std::size_t>(k) * kLanes, dt, grain_sides); },
+      32, settings.threads, settings.serial_below / kLanes);
 
   // Walls: infinite mass and radius, translating at their prescribed velocity.
-  const auto wall_pair = [&](std::ptrdiff_t k) {
-    Contact& pc = state.wall_contacts[k];
+  const auto wall_sides = [&](const Contact& pc) {
     const BodyModel& mb = model.bodies[pc.b];
     const BodyState& sb = state.bodies[pc.b];
     const Vec3& p = pc.geo.point;
-    evaluate<Law>(pc, pair(model.walls[pc.a].material, mb.material),
-                  (sb.v + sb.w.cross(p - sb.x)) - state.walls[pc.a].v, sb.w, mb.mass, mb.radius, dt);
+    return ContactSides{&pair(model.walls[pc.a].material, mb.material),
+                        (sb.v + sb.w.cross(p - sb.x)) - state.walls[pc.a].v, sb.w, mb.mass, mb.radius};
   };
-  parallel_for(static_cast<std::ptrdiff_t>(state.wall_contacts.size()), wall_pair, 128, settings.threads,
-               settings.serial_below);
+  parallel_for(
+      blocks_of(state.wall_contacts),
+      [&](std::ptrdiff_t k) { evaluate_block<Law>(state.wall_contacts, static_cast<std::size_t>(k) * kLanes, dt, wall_sides); },
+      32, settings.threads, settings.serial_below / kLanes);
 
   // Serial sums in contact order: independent of the thread count.
   const std::size_t n = state.bodies.size();

@@ -11,11 +11,15 @@
 //   contacts, wall_contacts (a, b, sub i32; xi; geo: touching u8, depth,
 //            normal, point, spread, gain, twist; force, torque, normal_force),
 //   x_at_rebuild (3 f64 each), protocol bytes, piece_caches and
-//   wall_piece_caches (a cache each).
+//   wall_piece_caches (a cache each),
+//   wall_rebuild count u64, then per wall its pose at the wall candidates'
+//   last finding (x, q; a world of spheres keeps them, World::broadphase).
 // Version 5 (before the piece-pair caches) is read too: no piece-cache
 // counts, no pieces field, no caches; its pairs of concave grains then
 // start their pieces cold, as a new pair does (a run resumed from it is
-// deterministic, not the bits of the run that wrote it).
+// deterministic, not the bits of the run that wrote it). So is version 6
+// (before the wall poses): a world of spheres resumed from it finds its wall
+// candidates anew, the same contacts from a list that may differ.
 #include "io/checkpoint.h"
 
 #include "core/bytes.h"
@@ -25,6 +29,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cstring>
 #include <fstream>
 #include <iterator>
@@ -54,8 +59,10 @@ Reader checkpoint_reader(std::span<const std::uint8_t> bytes, const std::string&
                 " Delete it and start the run again without --resume.");
 }
 
-// The first version without the piece-pair caches, still read.
+// The first version without the piece-pair caches, and the last without the
+// wall poses, still read.
 constexpr std::uint32_t kVersionWithoutPieces = 5;
+constexpr std::uint32_t kVersionWithoutWallPoses = 6;
 
 void write_cache(Writer& w, const PairCache& c) {
   w.vec(c.dir);
@@ -117,6 +124,7 @@ Contact read_contact(Reader& r) {
 
 constexpr std::size_t kBodyBytes = 13 * 8;
 constexpr std::size_t kWallBytes = 13 * 8;
+constexpr std::size_t kWallPoseBytes = 7 * 8;  // x, q
 constexpr std::size_t kCacheBytes = 2 * 4 + 1 + 3 * 8 + 7 * 4;
 constexpr std::size_t kPairBytes = 2 * 4 + kCacheBytes + 4;
 constexpr std::size_t kContactBytes = 3 * 4 + 1 + 22 * 8;
@@ -187,6 +195,9 @@ std::vector<std::uint8_t> encode_checkpoint(const State& state, std::span<const 
   p.bytes.insert(p.bytes.end(), protocol.begin(), protocol.end());
   for (const PairCache& c : state.piece_caches) write_cache(p, c);
   for (const PairCache& c : state.wall_piece_caches) write_cache(p, c);
+  const std::size_t wall_poses = std::min(state.wall_x_at_rebuild.size(), state.wall_q_at_rebuild.size());
+  p.u64(wall_poses);
+  for (std::size_t w = 0; w < wall_poses; ++w) p.vec(state.wall_x_at_rebuild[w]), p.quat(state.wall_q_at_rebuild[w]);
 
   Writer file;
   file.bytes.assign(std::begin(kMagic), std::end(kMagic));
@@ -205,8 +216,8 @@ Checkpoint decode_checkpoint(std::span<const std::uint8_t> bytes, const std::str
                 source_name);
   Reader header = checkpoint_reader(bytes.subspan(8), source_name);
   const std::uint32_t version = header.u32();
-  if (version != kCheckpointVersion && version != kVersionWithoutPieces)
-    input_error("checkpoint '{}' has format version {}, this grainlab reads versions {} and {}. Resume it with the "
+  if (version < kVersionWithoutPieces || version > kCheckpointVersion)
+    input_error("checkpoint '{}' has format version {}, this grainlab reads versions {} to {}. Resume it with the "
                 "grainlab that wrote it, or start the run again without --resume.",
                 source_name, version, kVersionWithoutPieces, kCheckpointVersion);
   const bool with_pieces = version > kVersionWithoutPieces;
@@ -258,6 +269,12 @@ Checkpoint decode_checkpoint(std::span<const std::uint8_t> bytes, const std::str
   for (PairCache& pc : s.piece_caches) pc = read_cache(r);
   s.wall_piece_caches.resize(n_wall_pieces);
   for (PairCache& pc : s.wall_piece_caches) pc = read_cache(r);
+  if (version > kVersionWithoutWallPoses) {
+    s.wall_x_at_rebuild.resize(r.count(kWallPoseBytes));
+    s.wall_q_at_rebuild.resize(s.wall_x_at_rebuild.size());
+    for (std::size_t w = 0; w < s.wall_x_at_rebuild.size(); ++w)
+      s.wall_x_at_rebuild[w] = r.vec(), s.wall_q_at_rebuild[w] = r.quat();
+  }
   for (const auto& [pairs, pool] : {std::pair{&s.pairs, &s.piece_caches}, std::pair{&s.wall_pairs, &s.wall_piece_caches}})
     for (const CandidatePair& p : *pairs)
       if (p.pieces < -1 || (p.pieces >= 0 && static_cast<std::size_t>(p.pieces) >= pool->size()))

@@ -49,7 +49,7 @@ bool same_grains(const Checkpoint& c, const Model& model);
 // Current checkpoint format version; files of another version are refused.
 // 2: candidate pairs (warm-start caches) and contacts (a, b, sub-contact) stored apart;
 //    protocol bytes through core/bytes.h, no Model fields.
-inline constexpr std::uint32_t kCheckpointVersion = 6;  // 3: contacts carry gain and twist; 4: pairs carry their GJK simplex; 5: the oedometer keeps its last row's stress; 6: pairs of concave grains keep their piece pairs' caches (5 is read too)
+inline constexpr std::uint32_t kCheckpointVersion = 7;  // 3: contacts carry gain and twist; 4: pairs carry their GJK simplex; 5: the oedometer keeps its last row's stress; 6: pairs of concave grains keep their piece pairs' caches; 7: the wall poses a world of spheres found its wall candidates at (5 and 6 are read too)
 
 // What a prepared specimen depends on (grains, box, seed, test, consolidation
 // stress, density scaling) as a hash: a specimen.bin (a checkpoint written as

@@ -96,3 +96,25 @@ TEST(ContactLawRegistry, HandlesOfTypesAndNamesAgree) {
   EXPECT_EQ(ContactLaw(), contact_law<DefaultLaw>());
   EXPECT_THROW(ContactLaw::at_index(RegisteredLaws::size), InputError);
 }
+
+// The Hertz-material coefficients written out from two unlike materials, as
+// hertz_material.h derives them: E*, G*, s = sqrt(R* delta), S_n = 2 E* s,
+// S_t = 8 G* s, K_n = (4/3) E* s, K_t = S_t, C_n = 2 sqrt(5/6) beta
+// sqrt(S_n m*), C_t = 2 sqrt(5/6) beta sqrt(S_t m*) (the law computes C_t from
+// C_n's square root; this checks that shortcut against the formula).
+TEST(HertzMaterialLaw, CoefficientsAreHertzMindlinsFromTheMaterialConstants) {
+  Material a, b;
+  a.youngs_modulus = 70e9, a.poisson_ratio = 0.22, a.restitution = 0.6;
+  b.youngs_modulus = 4e9, b.poisson_ratio = 0.35, b.restitution = 0.4;
+  const double e_star = 1 / ((1 - 0.22 * 0.22) / 70e9 + (1 - 0.35 * 0.35) / 4e9);
+  const double g_star = 1 / (2 * (2 - 0.22) * (1 + 0.22) / 70e9 + 2 * (2 - 0.35) * (1 + 0.35) / 4e9);
+  const double beta = restitution_to_beta(0.5);
+  const PairCoefficients p = HertzMaterialLaw::mix(a, b);
+  const double r_eff = 0.3e-3, m_eff = 2e-7, delta = 1e-6;
+  const double s = std::sqrt(r_eff * delta), s_n = 2 * e_star * s, s_t = 8 * g_star * s;
+  const LawCoefficients k = HertzMaterialLaw::at(p, delta, r_eff, m_eff);
+  EXPECT_NEAR(k.k_n / (4.0 / 3.0 * e_star * s), 1, 1e-14);
+  EXPECT_NEAR(k.k_t / s_t, 1, 1e-14);
+  EXPECT_NEAR(k.c_n / (2 * std::sqrt(5.0 / 6.0) * beta * std::sqrt(s_n * m_eff)), 1, 1e-14);
+  EXPECT_NEAR(k.c_t / (2 * std::sqrt(5.0 / 6.0) * beta * std::sqrt(s_t * m_eff)), 1, 1e-14);
+}

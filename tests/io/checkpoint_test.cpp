@@ -76,6 +76,10 @@ class RandomFill {
     for (Contact& p : s.wall_contacts) p = contact();
     s.x_at_rebuild.resize(s.bodies.size());
     for (Vec3& x : s.x_at_rebuild) x = v();
+    s.wall_x_at_rebuild.resize(n(2) == 0 ? 0 : s.walls.size());  // kept (a world of spheres) or not
+    s.wall_q_at_rebuild.resize(s.wall_x_at_rebuild.size());
+    for (Vec3& x : s.wall_x_at_rebuild) x = v();
+    for (Quat& wq : s.wall_q_at_rebuild) wq = q();
     return s;
   }
 
@@ -156,6 +160,12 @@ void expect_same(const State& a, const State& b) {
   ASSERT_EQ(a.wall_piece_caches.size(), b.wall_piece_caches.size());
   for (std::size_t i = 0; i < a.wall_piece_caches.size(); ++i)
     expect_same(a.wall_piece_caches[i], b.wall_piece_caches[i]);
+  ASSERT_EQ(a.wall_x_at_rebuild.size(), b.wall_x_at_rebuild.size());
+  ASSERT_EQ(a.wall_q_at_rebuild.size(), b.wall_q_at_rebuild.size());
+  for (std::size_t i = 0; i < a.wall_x_at_rebuild.size(); ++i) {
+    expect_same(a.wall_x_at_rebuild[i], b.wall_x_at_rebuild[i]);
+    expect_same(a.wall_q_at_rebuild[i], b.wall_q_at_rebuild[i]);
+  }
 }
 
 TEST(Checkpoint, RandomStateRoundTripsBitForBit) {
@@ -222,10 +232,23 @@ TEST(Checkpoint, WrongVersionAndWrongFileAreRefused) {
   EXPECT_NE(missing.find("/no/such/checkpoint.bin"), std::string::npos) << missing;
 }
 
+// The same checkpoint in format version 6 (before the wall poses): the
+// trailing wall-pose count and poses cut off. `s` has no wall poses.
+std::vector<std::uint8_t> as_version6(const std::vector<std::uint8_t>& v7) {
+  constexpr std::size_t header = 32;
+  const std::vector<std::uint8_t> out(v7.begin() + header, v7.end() - 8);
+  ByteWriter file;
+  file.bytes.assign(v7.begin(), v7.begin() + 8);
+  file.u32(6), file.u32(0), file.u64(out.size()), file.u64(fnv1a64(out));
+  file.bytes.insert(file.bytes.end(), out.begin(), out.end());
+  return file.bytes;
+}
+
 // The same checkpoint in format version 5 (before the piece-pair caches):
 // no piece-cache counts, no pieces field per pair, no caches. `s` has none.
-std::vector<std::uint8_t> as_version5(const State& s, const std::vector<std::uint8_t>& v6) {
+std::vector<std::uint8_t> as_version5(const State& s, const std::vector<std::uint8_t>& v7) {
   constexpr std::size_t header = 32, pair_bytes = 73, count_at = 8 + 8 + 8 + 1;
+  const std::vector<std::uint8_t> v6 = as_version6(v7);
   const std::vector<std::uint8_t> payload(v6.begin() + header, v6.end());
   std::vector<std::uint8_t> out(payload.begin(), payload.begin() + count_at + 8 * 8);  // the first 8 counts
   std::size_t at = count_at + 10 * 8;
@@ -249,13 +272,26 @@ TEST(Checkpoint, AVersion5FileIsReadWithColdPieces) {
   for (CandidatePair& p : s.pairs) p.pieces = -1;
   for (CandidatePair& p : s.wall_pairs) p.pieces = -1;
   const std::vector<std::uint8_t> protocol{7, 8, 9};
-  const std::vector<std::uint8_t> v6 = encode_checkpoint(s, protocol, 42);
-  const std::vector<std::uint8_t> v5 = as_version5(s, v6);
-  ASSERT_EQ(v5.size(), v6.size() - 16 - 4 * (s.pairs.size() + s.wall_pairs.size()));
+  s.wall_x_at_rebuild.clear(), s.wall_q_at_rebuild.clear();
+  const std::vector<std::uint8_t> v7 = encode_checkpoint(s, protocol, 42);
+  const std::vector<std::uint8_t> v5 = as_version5(s, v7);
+  ASSERT_EQ(v5.size(), v7.size() - 8 - 16 - 4 * (s.pairs.size() + s.wall_pairs.size()));
   const Checkpoint c = decode_checkpoint(v5, "v5.bin");
   expect_same(c.state, s);
   EXPECT_EQ(c.protocol, protocol);
   EXPECT_EQ(c.config_hash, 42u);
+}
+
+TEST(Checkpoint, AVersion6FileIsReadWithoutWallPoses) {
+  // Its world of spheres finds its wall candidates anew (empty poses).
+  RandomFill fill(23);
+  State s = fill.state();
+  s.wall_x_at_rebuild.clear(), s.wall_q_at_rebuild.clear();
+  const std::vector<std::uint8_t> protocol{1, 2};
+  const std::vector<std::uint8_t> v6 = as_version6(encode_checkpoint(s, protocol, 43));
+  const Checkpoint c = decode_checkpoint(v6, "v6.bin");
+  expect_same(c.state, s);
+  EXPECT_EQ(c.protocol, protocol);
 }
 
 TEST(Checkpoint, APairsPieceCachesOutsideTheirListAreRefused) {

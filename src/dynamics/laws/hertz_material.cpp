@@ -26,7 +26,8 @@ PairCoefficients HertzMaterialLaw::mix(const Material& a, const Material& b) {
   PairCoefficients p;
   p.k_n = 1.0 / (inv_e(a) + inv_e(b));  // E*
   p.k_t = 1.0 / (inv_g(a) + inv_g(b));  // G*
-  p.gamma_n = p.gamma_t = restitution_to_beta(0.5 * (a.restitution + b.restitution));
+  p.gamma_n = restitution_to_beta(0.5 * (a.restitution + b.restitution));
+  p.gamma_t = p.gamma_n * std::sqrt(4 * p.k_t / p.k_n);  // C_t's factor over sqrt(S_n m*) (hertz_material.h)
   return p;
 }
 

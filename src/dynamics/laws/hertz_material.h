@@ -4,10 +4,13 @@
 // restitution e in (0, 1]. A pair mixes
 //     1/E* = (1-nu_a^2)/E_a + (1-nu_b^2)/E_b,
 //     1/G* = 2(2-nu_a)(1+nu_a)/E_a + 2(2-nu_b)(1+nu_b)/E_b,
-// and beta from the mean restitution (PairCoefficients: k_n = E*, k_t = G*,
-// gamma_n = gamma_t = beta). With s = sqrt(R* delta), S_n = 2 E* s, S_t = 8 G* s:
+// and beta from the mean restitution. With s = sqrt(R* delta), S_n = 2 E* s,
+// S_t = 8 G* s:
 //     K_n = (4/3) E* s, K_t = S_t, C_n = 2 sqrt(5/6) beta sqrt(S_n m*),
-//     C_t = 2 sqrt(5/6) beta sqrt(S_t m*).
+//     C_t = 2 sqrt(5/6) beta sqrt(S_t m*) = 2 sqrt(5/6) beta sqrt(4 G*/E*) sqrt(S_n m*),
+// so a pair stores (PairCoefficients) k_n = E*, k_t = G*, gamma_n = beta and
+// gamma_t = beta sqrt(4 G*/E*), and a contact takes one square root for both
+// dampers.
 // Elastic normal force f = (4/3) E* sqrt(R*) delta^{3/2}: tangent stiffness
 // df/ddelta = (3/2) K_n = (3/2) f/delta, stored energy (2/5) f delta.
 //
@@ -42,17 +45,18 @@ struct HertzMaterialLaw {
   // E > 0 finite, nu in (-1, 0.5), e in (0, 1].
   static void validate(const Material& m);
 
-  // Harmonic E* and G*, beta from the mean restitution.
+  // Harmonic E* and G*, beta from the mean restitution (gamma_t: beta sqrt(4 G*/E*)).
   static PairCoefficients mix(const Material& a, const Material& b);
 
   // K_n, C_n, K_t, C_t at overlap delta.
-  static LawCoefficients at(const PairCoefficients& p, double delta, double r_eff, double m_eff) {
+  template <typename T>
+  static LawCoefficientsOf<T> at(const PairCoefficientsOf<T>& p, T delta, T r_eff, T m_eff) {
     constexpr double two_sqrt_5_6 = 1.8257418583505538;  // 2 sqrt(5/6)
-    const double s = std::sqrt(r_eff * delta);
-    const double s_n = 2.0 * p.k_n * s;  // k_n holds E*
-    const double s_t = 8.0 * p.k_t * s;  // k_t holds G*
-    return {(2.0 / 3.0) * s_n, two_sqrt_5_6 * p.gamma_n * std::sqrt(s_n * m_eff), s_t,
-            two_sqrt_5_6 * p.gamma_t * std::sqrt(s_t * m_eff)};
+    const T s = root(r_eff * delta);
+    const T s_n = 2.0 * p.k_n * s;  // k_n holds E*
+    const T s_t = 8.0 * p.k_t * s;  // k_t holds G*
+    const T damper = two_sqrt_5_6 * root(s_n * m_eff);
+    return {(2.0 / 3.0) * s_n, p.gamma_n * damper, s_t, p.gamma_t * damper};
   }
 
   // d f_n / d delta = (3/2) K_n.

@@ -29,8 +29,9 @@ struct HertzUserLaw {
   static PairCoefficients mix(const Material& a, const Material& b) { return mix_user_coefficients(a, b); }
 
   // K_n, C_n, K_t, C_t at overlap delta.
-  static LawCoefficients at(const PairCoefficients& p, double delta, double r_eff, double m_eff) {
-    const double s = std::sqrt(r_eff * delta);
+  template <typename T>
+  static LawCoefficientsOf<T> at(const PairCoefficientsOf<T>& p, T delta, T r_eff, T m_eff) {
+    const T s = root(r_eff * delta);
     return {p.k_n * s, p.gamma_n * m_eff * s, p.k_t * s, p.gamma_t * m_eff * s};
   }
 

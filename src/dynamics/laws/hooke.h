@@ -28,7 +28,8 @@ struct HookeLaw {
   static PairCoefficients mix(const Material& a, const Material& b) { return mix_user_coefficients(a, b); }
 
   // K_n, C_n, K_t, C_t (independent of the overlap).
-  static LawCoefficients at(const PairCoefficients& p, double /*delta*/, double /*r_eff*/, double m_eff) {
+  template <typename T>
+  static LawCoefficientsOf<T> at(const PairCoefficientsOf<T>& p, T /*delta*/, T /*r_eff*/, T m_eff) {
     return {p.k_n, p.gamma_n * m_eff, p.k_t, p.gamma_t * m_eff};
   }
 

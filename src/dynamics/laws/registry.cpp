@@ -14,7 +14,7 @@ namespace {
 template <typename Law>
 constexpr ContactLawEntry entry_of() {
   return {Law::name,       Law::parameters, &Law::validate,          &Law::mix,
-          &Law::at,        &Law::stiffness, &Law::tangent_stiffness, &Law::elastic_energy};
+          &Law::template at<double>, &Law::stiffness, &Law::tangent_stiffness, &Law::elastic_energy};
 }
 
 template <typename... Laws>
