@@ -401,8 +401,8 @@ void World::collide_list(std::vector<CandidatePair>& pairs, bool walls, std::vec
   const std::size_t n = pairs.size();
   // Each pair collides into a per-thread buffer and copies its touching
   // results, in increasing sub-contact id, into its own fixed-capacity slot,
-  // in parallel. Most pairs do
-  // not touch and write nothing but their count. Slots per pair: one unless
+  // in parallel. Most pairs do not touch and write nothing but their count.
+  // Slots per pair: one unless
   // a compound shape can touch in several places (only the compound routines
   // write more than one result), so a world of convex grains writes densely;
   // a pair of spheres is only counted here, its geometry made in the fill.
@@ -413,11 +413,11 @@ void World::collide_list(std::vector<CandidatePair>& pairs, bool walls, std::vec
   parallel_for(
       static_cast<std::ptrdiff_t>(n),
       [&](std::ptrdiff_t k) {
-        SubContact* out = &sub_results_[static_cast<std::size_t>(k) * slots];
         if (spheres && !walls) {  // only counted: the fill below computes the geometry again
           sub_counts_[k] = collide_spheres(pairs[k]).touching;
           return;
         }
+        SubContact* out = &sub_results_[static_cast<std::size_t>(k) * slots];
         thread_local SubContact local[kMaxSubContacts];  // constructed once per thread, not per pair
         const int written = walls ? collide_wall(pairs[k], local) : collide_pair(pairs[k], local);
         int touching = 0;
@@ -529,9 +529,14 @@ void evaluate_block(std::vector<Contact>& list, std::size_t first, double dt, co
   }
 }
 
-// Blocks of kLanes contacts in `list`.
-std::ptrdiff_t blocks_of(const std::vector<Contact>& list) {
-  return static_cast<std::ptrdiff_t>((list.size() + kLanes - 1) / kLanes);
+// The law over all of `list`, block by block, in parallel (blocks fixed by
+// index, so the thread count changes nothing).
+template <typename Law, typename Sides>
+void evaluate_all(std::vector<Contact>& list, double dt, const Sides& sides, const WorldSettings& settings) {
+  parallel_for(
+      static_cast<std::ptrdiff_t>((list.size() + kLanes - 1) / kLanes),
+      [&](std::ptrdiff_t k) { evaluate_block<Law>(list, static_cast<std::size_t>(k) * kLanes, dt, sides); }, 32,
+      settings.threads, settings.serial_below / kLanes);
 }
 
 }  // namespace
@@ -547,10 +552,7 @@ void World::forces_with(double dt) {
                         (sb.v + sb.w.cross(p - sb.x)) - (sa.v + sa.w.cross(p - sa.x)), sb.w - sa.w,
                         ma.mass * mb.mass / (ma.mass + mb.mass), ma.radius * mb.radius / (ma.radius + mb.radius)};
   };
-  parallel_for(
-      blocks_of(state.contacts),
-      [&](std::ptrdiff_t k) { evaluate_block<Law>(state.contacts, static_cast<std::size_t>(k) * kLanes, dt, grain_sides); },
-      32, settings.threads, settings.serial_below / kLanes);
+  evaluate_all<Law>(state.contacts, dt, grain_sides, settings);
 
   // Walls: infinite mass and radius, translating at their prescribed velocity.
   const auto wall_sides = [&](const Contact& pc) {
@@ -560,10 +562,7 @@ void World::forces_with(double dt) {
     return ContactSides{&pair(model.walls[pc.a].material, mb.material),
                         (sb.v + sb.w.cross(p - sb.x)) - state.walls[pc.a].v, sb.w, mb.mass, mb.radius};
   };
-  parallel_for(
-      blocks_of(state.wall_contacts),
-      [&](std::ptrdiff_t k) { evaluate_block<Law>(state.wall_contacts, static_cast<std::size_t>(k) * kLanes, dt, wall_sides); },
-      32, settings.threads, settings.serial_below / kLanes);
+  evaluate_all<Law>(state.wall_contacts, dt, wall_sides, settings);
 
   // Serial sums in contact order: independent of the thread count.
   const std::size_t n = state.bodies.size();
