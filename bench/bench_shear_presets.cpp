@@ -48,6 +48,8 @@ DirectShearSpec small_spec(const Options& o, const std::string& sand) {
   spec.grains.shapes = 12;
   spec.grains.faces = 200;
   spec.specimen.tolerance = 1.0;  // report what one procedure reaches
+  spec.specimen.indices = "lab";  // Dr on the sand's lab indices: no own index measurement here
+  spec.specimen.deposition_friction = 0.12;
   spec.shear.final_strain = o.strain;
   spec.numerics.time_step_fraction = 0.4;
   spec.seed = 3;

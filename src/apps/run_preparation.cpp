@@ -2,6 +2,7 @@
 #include "apps/run_preparation.h"
 
 #include "io/kept_preparations.h"
+#include "io/embedded_indices.h"
 #include "io/json.h"
 #include "io/preparation_files.h"
 #include "lab/index_densities.h"
@@ -88,7 +89,13 @@ PreparedRun prepare_run(const DirectShearSpec& spec, const fs::path& out, bool r
   };
   if (r.specimen.indices == "own" && !r.own_indices_known()) {
     const fs::path cache = out / "index_densities.json";
-    if (const auto cached = cached_index_densities(cache, spec)) {
+    if (const auto known = embedded_index_densities(spec)) {
+      r.specimen.own_e_min = known->e_min;
+      r.specimen.own_e_max = known->e_max;
+      fmt::print("own index void ratios of the default grains, {}: e_min {:.4f}, e_max {:.4f}\n", known->how,
+                 r.specimen.own_e_min, r.specimen.own_e_max);
+      run.record["index_densities_source"] = known->how;
+    } else if (const auto cached = cached_index_densities(cache, spec)) {
       std::tie(r.specimen.own_e_min, r.specimen.own_e_max) = *cached;
       fmt::print("own index void ratios from {}: e_min {:.4f}, e_max {:.4f}\n", cache.string(), r.specimen.own_e_min,
                  r.specimen.own_e_max);
@@ -103,10 +110,15 @@ PreparedRun prepare_run(const DirectShearSpec& spec, const fs::path& out, bool r
       if (!done.dense.empty())
         fmt::print("  keeping the {} preparation(s) an earlier run saved in {}\n",
                    done.dense.size() + done.loose.size(), cache.string());
-      fs::create_directories(out);
+      // The folder is made when a preparation is kept, not before: a config
+      // that the index box refuses (a time step above the critical one) writes nothing.
       const IndexDensities d = measure_index_densities(
           spec, options, print, std::move(done),
-          [&](const IndexDensities& so_far) { write_index_densities(cache, spec, so_far, false); }, &store);
+          [&](const IndexDensities& so_far) {
+            fs::create_directories(out);
+            write_index_densities(cache, spec, so_far, false);
+          },
+          &store);
       write_index_densities(cache, spec, d);
       if (!d.settled())
         fmt::print("  warning: a preparation hit the step cap before it came to rest; the indices are what "

@@ -59,7 +59,8 @@ const char* shear_phase_name(ShearPhase p) {
 }
 
 DirectShearTest::DirectShearTest(const DirectShearSpec& spec) : spec_(spec) {
-  if (spec.targets_own_indices() && !spec.own_indices_known())
+  // (A scan's density is the scan's: it targets none.)
+  if (spec.targets_own_indices() && !spec.own_indices_known() && spec.grains.scan.empty())
     input_error("specimen.relative_density = {} is a Dr on the grains' own index void ratios "
                 "(specimen.indices = \"own\"), which are not known: measure them with `grainlab grains "
                 "index` and set specimen.own_e_min and specimen.own_e_max (`grainlab run` measures them "

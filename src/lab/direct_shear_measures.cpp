@@ -65,7 +65,9 @@ double DirectShearTest::achieved_lab_relative_density() const {
 }
 
 double DirectShearTest::achieved_relative_density() const {
-  return spec_.targets_own_indices() ? achieved_own_relative_density() : achieved_lab_relative_density();
+  // A scan's specimen targets no density and may not know its own indices: Dr on the lab's then.
+  const bool own = spec_.targets_own_indices() && spec_.own_indices_known();
+  return own ? achieved_own_relative_density() : achieved_lab_relative_density();
 }
 
 double DirectShearTest::coordination_number() const {
@@ -156,7 +158,7 @@ std::string DirectShearTest::status_line() const {
 
 std::string DirectShearTest::phase_note() const {
   if (p_.phase != ShearPhase::Consolidate) return "";
-  if (spec_.targets_own_indices())
+  if (spec_.targets_own_indices() && spec_.own_indices_known())
     return fmt::format("prepared: bulk void ratio {:.3f} (target {:.3f}), Dr {:.0f} % on the grains' own indices "
                        "(whole specimen e {:.3f})",
                        achieved_bulk_void_ratio(), spec_.target_void_ratio(), 100 * achieved_relative_density(),

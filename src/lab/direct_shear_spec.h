@@ -62,12 +62,11 @@ struct BoxSpec {
 };
 
 struct SpecimenSpec {
-  double relative_density = 0.96;  // target Dr = (e_max - e)/(e_max - e_min) on the indices below
-  std::string indices = "lab";     // "lab": Dr on the lab's e_min/e_max of the real sand; "own": Dr on
-                                   // the grains' own index voids (own_e_min/own_e_max, measured by
-                                   // `grainlab grains index` or by the run when not given). Default "lab"
-                                   // until the demo and the study are re-measured on own indices
-                                   // (docs/direct_shear.md, "Whose Dr")
+  double relative_density = 0.9;   // target Dr = (e_max - e)/(e_max - e_min) on the indices below
+  std::string indices = "own";     // "own": Dr on the grains' own index voids (own_e_min/own_e_max, measured
+                                   // by `grainlab grains index` or by the run when not given; the default
+                                   // grains' are embedded, io/embedded_indices.h); "lab": Dr on the lab's
+                                   // e_min/e_max of the real sand (docs/direct_shear.md, "Whose Dr")
   double own_e_max = 0;            // the grains' own loosest void ratio; 0 = measure it (lab/index_densities.h)
   double own_e_min = 0;            // the grains' own densest void ratio; 0 = measure it
   double e_max = 0.86;             // lab index void ratios of the sand (Griffin sand, paper section 3)
@@ -75,9 +74,11 @@ struct SpecimenSpec {
   double void_ratio = -1;          // if > 0: target void ratio, overrides Dr
   double tolerance = 0.02;         // accepted |e - e_target| (void ratio and lab-index targets)
   double relative_density_tolerance = 0.05;  // accepted |Dr - Dr_target| (own-index targets)
-  double deposition_friction = 0.12; // inter-grain friction while raining and compacting (lower: denser;
-                                     // 0.12 gives e = 0.55 with the default grains and box, 0.05 gives 0.51);
-                                     // < 0: chosen by bisection over trial preparations (lab/preparation_search.h)
+  double deposition_friction = 0.04; // inter-grain friction while raining and compacting (lower: denser).
+                                     // Measured with the default grains and box: 0 gives own Dr 0.96,
+                                     // 0.04 gives 0.93, 0.12 gives 0.75 (docs/direct_shear.md, "The
+                                     // embedded default"); < 0: chosen by bisection over trial preparations
+                                     // (lab/preparation_search.h), for other grains or another target
   std::string from;  // a specimen.bin another run wrote as its loading began: start from that
                      // specimen instead of preparing one (same grains, box, seed, test, stress and
                      // density scaling; the material and the loading may differ). "" = prepare

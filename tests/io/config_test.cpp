@@ -259,11 +259,12 @@ INSTANTIATE_TEST_SUITE_P(
                       BadValue{"[output]\nstrain_interval = 0\n", "output.strain_interval"},
                       BadValue{"[output]\nfolder = \"\"\n", "output.folder"}));
 
-// A config written before the own index densities (issue 10) still parses
-// and means what it meant: its e_min/e_max are the lab's indices, its Dr is on
-// them (indices = "lab" is the default until the own e_max is a loose packing,
-// see direct_shear_spec.h), and its fixed deposition friction stays fixed.
-// indices = "own" takes the grains' own indices; friction -1 searches.
+// A config written before the own index densities (issue 10) still parses.
+// Since 2026-12-04 a target Dr is on the grains' own indices unless the
+// config says indices = "lab" (the issue: "a target Dr means the material's
+// own Dr unless the user sets void_ratio or says otherwise"): an old config's
+// e_min/e_max are then the lab's, reported beside the own Dr, and its fixed
+// deposition friction stays fixed. friction -1 searches.
 TEST(Config, OldSpecimenKeysStillParse) {
   const DirectShearSpec s = parse_config(
       "[specimen]\nrelative_density = 0.9\ne_max = 0.9\ne_min = 0.6\ntolerance = 0.03\n"
@@ -271,9 +272,13 @@ TEST(Config, OldSpecimenKeysStillParse) {
   EXPECT_EQ(s.specimen.e_max, 0.9);
   EXPECT_EQ(s.specimen.e_min, 0.6);
   EXPECT_EQ(s.specimen.deposition_friction, 0.1);
-  EXPECT_EQ(s.specimen.indices, "lab");
-  EXPECT_FALSE(s.targets_own_indices());
-  EXPECT_DOUBLE_EQ(s.target_void_ratio(), 0.63);
+  EXPECT_EQ(s.specimen.indices, "own");
+  EXPECT_TRUE(s.targets_own_indices());
+  EXPECT_FALSE(s.own_indices_known());  // grainlab run measures them
+  const DirectShearSpec lab = parse_config(
+      "[specimen]\nindices = \"lab\"\nrelative_density = 0.9\ne_max = 0.9\ne_min = 0.6\n", "lab.toml");
+  EXPECT_FALSE(lab.targets_own_indices());
+  EXPECT_DOUBLE_EQ(lab.target_void_ratio(), 0.63);
   const DirectShearSpec own = parse_config("[specimen]\nindices = \"own\"\nrelative_density = 0.5\n"
                                            "own_e_max = 0.8\nown_e_min = 0.6\ndeposition_friction = -1\n",
                                            "own.toml");
@@ -281,7 +286,9 @@ TEST(Config, OldSpecimenKeysStillParse) {
   EXPECT_TRUE(own.own_indices_known());
   EXPECT_DOUBLE_EQ(own.target_void_ratio(), 0.7);
   EXPECT_EQ(own.specimen.deposition_friction, -1);  // chosen by bisection
-  EXPECT_EQ(parse_config("[specimen]\nrelative_density = 0.5\n", "d.toml").specimen.deposition_friction, 0.12);
+  EXPECT_EQ(parse_config("[specimen]\nrelative_density = 0.5\n", "d.toml").specimen.deposition_friction, 0.04);
+  // A void ratio overrides either index.
+  EXPECT_FALSE(parse_config("[specimen]\nvoid_ratio = 0.6\n", "e.toml").targets_own_indices());
 }
 
 TEST(Config, UnknownSandPreset) {

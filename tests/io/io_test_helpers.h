@@ -139,7 +139,7 @@ inline DirectShearSpec all_fields_changed() {
   s.material.grain.gamma_t = 41.5;
   s.material.wall_friction = 0.05;
   s.box = {0.03, 0.031, 0.016, 1.0 / 3.0 * 1e-3};
-  s.specimen = {0.5, "own", 0.8, 0.55, 0.9, 0.6, 0.7, 0.01, 0.04, 0.1, "runs/first/specimen.bin"};
+  s.specimen = {0.5, "lab", 0.8, 0.55, 0.9, 0.6, 0.7, 0.01, 0.04, 0.1, "runs/first/specimen.bin"};
   s.consolidation = {123456.789, 0.005, 0.02};
   s.shear = {1e-4, 0.2};
   s.numerics = {2e-8, 0.15, 100, 5e-4, 2};

@@ -28,7 +28,7 @@ struct TinyRun {
   double max_shear_stress_error = 0;  // relative, at any step of shear
   double worst_force_balance = 0;  // |sum of wall forces along x| / N at the samples
   double worst_normal_balance = 0; // |sum of wall forces along z - W| / N at the samples
-  double mean_force_balance = 0;   // the x balance averaged over the samples
+  double mean_force_balance = 0;   // the signed x balance averaged over the samples, then its magnitude
 
   TinyRun() {
     const Model& m = test.world().model;
@@ -55,11 +55,11 @@ struct TinyRun {
         const double z = std::abs(total.z() + weight) / test.normal_force();
         worst_force_balance = std::max(worst_force_balance, x);
         worst_normal_balance = std::max(worst_normal_balance, z);
-        mean_force_balance += x;
+        mean_force_balance += total.x() / test.normal_force();
         ++samples;
       }
     }
-    mean_force_balance /= std::max<std::size_t>(samples, 1);
+    mean_force_balance = std::abs(mean_force_balance) / std::max<std::size_t>(samples, 1);
   }
 };
 
@@ -120,10 +120,13 @@ void series_is_consistent_with_the_walls(const TinyRun& r) {
   // transient of a few per cent of N at one sample, and which sample catches
   // one is chaotic in the contact's rounding: the worst x balance measured
   // 0.034 (session 8) and 0.056 (session 9, the same contact summed in
-  // another order), its mean over the samples 0.010; z 0.002 at worst. So
-  // the mean is held to 2 % (sustained imbalance: shearing too fast, or a
-  // wall force not counted) and every sample to 10 %.
-  std::printf("wall force balance: x %.2g of N at worst, %.2g on average; z %.2g of N at worst\n",
+  // another order); z 0.002 at worst. The slips go both ways: with the
+  // sharper 120-face grains of 2026-12-04 (generator_test.cpp,
+  // AGrainOfFewFacesIs...) the samples swing by +-0.06 and the mean of
+  // their magnitudes is 0.028, the signed mean 0.005. So the signed mean is
+  // held to 2 % (a sustained imbalance: shearing too fast, or a wall force
+  // not counted, which pushes one way) and every sample to 10 %.
+  std::printf("wall force balance: x %.2g of N at worst, %.2g on average (signed); z %.2g of N at worst\n",
               r.worst_force_balance, r.mean_force_balance, r.worst_normal_balance);
   EXPECT_LT(r.mean_force_balance, 0.02);
   EXPECT_LT(r.worst_force_balance, 0.1);

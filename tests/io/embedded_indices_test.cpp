@@ -1,0 +1,65 @@
+// The embedded default's own index void ratios (io/embedded_indices.h) are
+// taken by the default spec and by nothing else, and still belong to the
+// grains the generator makes for it: when the default's index inputs or its
+// grains change, the first test fails and says how to measure them again.
+#include "io/checkpoint.h"
+#include "io/embedded_indices.h"
+#include "lab/direct_shear.h"
+
+#include <gtest/gtest.h>
+
+using namespace grainlab;
+
+namespace {
+
+const char* kRemeasure =
+    "the embedded default's own index void ratios were measured for other inputs or other grains. Measure "
+    "them again with `build/grainlab grains index --seeds 1 --threads 1` (about 10 minutes) and put e_min, "
+    "e_max, this key hash and this fingerprint in src/io/embedded_indices.cpp";
+
+}  // namespace
+
+TEST(EmbeddedIndices, BelongToTheDefaultInputsAndTheGrainsMadeForThem) {
+  const DirectShearSpec spec;
+  const EmbeddedIndices& r = default_grain_indices();
+  EXPECT_EQ(index_key_hash(spec), r.key_hash) << kRemeasure << " (key hash 0x" << std::hex << index_key_hash(spec)
+                                              << ")";
+  DirectShearSpec known = spec;
+  known.specimen.own_e_min = r.e_min;
+  known.specimen.own_e_max = r.e_max;
+  const DirectShearTest test(known);
+  const std::uint32_t grains = grains_fingerprint(test.world().model);
+  EXPECT_EQ(grains, r.grains) << kRemeasure << " (fingerprint 0x" << std::hex << grains << ")";
+  // A packing's own indices: the loosest above the densest, both physical for faceted grains.
+  EXPECT_GT(r.e_min, 0.3);
+  EXPECT_GT(r.e_max, r.e_min + 0.1);
+  EXPECT_LT(r.e_max, 1.0);
+  EXPECT_GT(r.e_min_whole, r.e_min);  // the layer at the walls is looser than the bulk
+  EXPECT_GT(r.e_max_whole, r.e_max);
+}
+
+TEST(EmbeddedIndices, AreTakenOnlyForTheDefaultsIndexInputs) {
+  DirectShearSpec spec;
+  ASSERT_TRUE(embedded_index_densities(spec));
+  // What the index measurement does not depend on leaves them.
+  spec.numerics.threads = 1;
+  spec.output.folder = "elsewhere";
+  spec.specimen.relative_density = 0.3;
+  spec.box.length *= 2;  // the index box is 10 d_max across whatever the test's box
+  spec.shear.final_strain = 0.2;
+  EXPECT_TRUE(embedded_index_densities(spec));
+  // What it depends on does not.
+  const auto other = [](auto change) {
+    DirectShearSpec s;
+    change(s);
+    return embedded_index_densities(s).has_value();
+  };
+  EXPECT_FALSE(other([](DirectShearSpec& s) { s.seed = 2; }));
+  EXPECT_FALSE(other([](DirectShearSpec& s) { s.grains.preset = "rounded"; }));
+  EXPECT_FALSE(other([](DirectShearSpec& s) { s.grains.faces = 1000; }));
+  EXPECT_FALSE(other([](DirectShearSpec& s) { s.grains.d_max = 1e-3; }));
+  EXPECT_FALSE(other([](DirectShearSpec& s) { s.grains.folder = "my_grains"; }));
+  EXPECT_FALSE(other([](DirectShearSpec& s) { s.material.grain.friction = 0.3; }));
+  EXPECT_FALSE(other([](DirectShearSpec& s) { s.consolidation.normal_stress = 200e3; }));
+  EXPECT_FALSE(other([](DirectShearSpec& s) { s.numerics.time_step_fraction = 0.2; }));
+}
