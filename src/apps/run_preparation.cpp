@@ -1,9 +1,9 @@
 // Own indices and deposition friction before a run (see run_preparation.h).
 #include "apps/run_preparation.h"
 
-#include "io/kept_preparations.h"
 #include "io/embedded_indices.h"
 #include "io/json.h"
+#include "io/kept_preparations.h"
 #include "io/preparation_files.h"
 #include "lab/index_densities.h"
 #include "lab/preparation_search.h"

@@ -327,11 +327,8 @@ TriMesh generate_convex_grain(const GeneratorSpec& spec, Rng& rng) {
   // Measured roundness sits above the model's at small r (the tessellation and
   // the metric's smoothing floor blunt the sharpest corners): correct the model
   // target by the measured miss, keeping the closest of a few attempts.
-  // The radius is found on a tessellation of at least kRoundnessMeasureFaces
-  // (below that the measure cannot see the rounding: a 200-face rounded grain
-  // measures 0.55 whatever its radius, and chasing 0.70 swelled its corners
-  // until it was a ball), then the grain is tessellated at its own budget: a
-  // coarse grain is a coarse tessellation of the same body.
+  // Measured on at least kRoundnessMeasureFaces (see there), then the grain
+  // is tessellated at its own budget from the same core and radius.
   const RoundnessOfRadius model = core_inscribed_radii(core);
   const int measure_faces = std::max(spec.faces, kRoundnessMeasureFaces);
   double model_target = roundness, best_miss = std::numeric_limits<double>::infinity(), best_r = 0;

@@ -79,7 +79,7 @@ const std::array kFields{
              "opened when the shear begins)"),
 
     GL_FIELD("specimen", "relative_density", specimen.relative_density, "target Dr = (e_max - e)/(e_max - e_min) on specimen.indices, in [0, 1]"),
-    GL_FIELD("specimen", "indices", specimen.indices, "\"own\": Dr on the grains' own index voids (own_e_min/own_e_max; measured when 0) | \"lab\": on the lab's e_min/e_max"),
+    GL_FIELD("specimen", "indices", specimen.indices, "\"own\": Dr on the grains' own index voids (own_e_min/own_e_max; measured when 0, built in for the default grains) | \"lab\": on the lab's e_min/e_max"),
     GL_FIELD("specimen", "own_e_max", specimen.own_e_max, "the grains' own loosest void ratio (`grainlab grains index`); 0 = the run measures it"),
     GL_FIELD("specimen", "own_e_min", specimen.own_e_min, "the grains' own densest void ratio (`grainlab grains index`); 0 = the run measures it"),
     GL_FIELD("specimen", "e_max", specimen.e_max, "the lab's maximum index void ratio of the real sand (reported; the target with indices = \"lab\")"),

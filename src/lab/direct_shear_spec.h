@@ -2,7 +2,8 @@
 // layer fills it from a TOML file (io/config.h); the lab runs it
 // (lab/direct_shear.h). Defaults are the embedded demo: a small box of
 // sub-angular grains sheared to 10 % strain under 100 kPa: 8.5 x 8.5 x 5.1 mm,
-// 10 x 6 largest grains (ASTM D3080), about 1100 grains of 200 faces.
+// 10 x 6 largest grains (ASTM D3080), about 1230 grains of 200 faces, Dr 0.9
+// on their own index void ratios (io/embedded_indices.h).
 #pragma once
 
 #include "dynamics/contact_law.h"
@@ -75,10 +76,10 @@ struct SpecimenSpec {
   double tolerance = 0.02;         // accepted |e - e_target| (void ratio and lab-index targets)
   double relative_density_tolerance = 0.05;  // accepted |Dr - Dr_target| (own-index targets)
   double deposition_friction = 0.04; // inter-grain friction while raining and compacting (lower: denser).
-                                     // Measured with the default grains and box: 0 gives own Dr 0.96,
-                                     // 0.04 gives 0.93, 0.12 gives 0.75 (docs/direct_shear.md, "The
-                                     // embedded default"); < 0: chosen by bisection over trial preparations
-                                     // (lab/preparation_search.h), for other grains or another target
+                                     // 0.04 gives own Dr 0.90 with the default grains and box
+                                     // (docs/direct_shear.md, "The embedded default"); < 0: chosen by
+                                     // bisection over trial preparations (lab/preparation_search.h), for
+                                     // other grains or another target
   std::string from;  // a specimen.bin another run wrote as its loading began: start from that
                      // specimen instead of preparing one (same grains, box, seed, test, stress and
                      // density scaling; the material and the loading may differ). "" = prepare
