@@ -1,4 +1,6 @@
-// The 2000-bead direct shear of issue 11, timed per phase on 1 and 2 threads:
+// The 2000-bead direct shear of issue 11, timed per phase on 1 and 2 threads
+// and with the count left to grainlab (threads = 0: timed as it runs,
+// core/thread_tuner.h):
 // glass beads 0.707-0.841 mm in an 11.39 x 11.39 x 6.0 mm box (about 2000
 // beads at e = 0.6), E = 4 GPa, nu = 0.25, restitution 0.5, friction 0.12,
 // frictionless lubricated walls, dt = 4.674e-7 s, no density scaling, shear
@@ -7,7 +9,7 @@
 // test: it prints figures (particle-steps/s of each phase, the step's phase
 // times during the shear, wall times).
 //
-//   build/bench_sphere_lab [--strain S] [--threads N]   (default: 0.10; 1 then 2)
+//   build/bench_sphere_lab [--strain S] [--threads N]   (default: 0.10; 1, 2, then 0 = automatic)
 #include "core/wait_policy.h"
 #include "core/parallel.h"
 #include "core/timer.h"
@@ -52,7 +54,10 @@ void run(double strain, int threads) {
   DirectShearTest t(spec);
   t.world().settings.threads = threads;
   const double beads = static_cast<double>(t.world().model.bodies.size());
-  fmt::print("\n{} beads, {} thread{}, dt {:.4g} s\n", beads, threads, threads > 1 ? "s" : "", t.time_step());
+  fmt::print("\n{} beads, {}, dt {:.4g} s\n", beads,
+             threads > 0 ? fmt::format("{} thread{}", threads, threads > 1 ? "s" : "")
+                         : fmt::format("automatic threads (up to {})", grainlab::resolve_threads(0)),
+             t.time_step());
   std::string phase = t.phase_name();
   std::int64_t phase_step = t.world().state.step;
   Stopwatch clock;
@@ -86,6 +91,9 @@ void run(double strain, int threads) {
                p.contacts / steps);
   }
   fmt::print("  total {:.1f} s (e = {:.3f})\n", total.seconds(), t.achieved_void_ratio());
+  if (threads == 0)
+    fmt::print("  automatic threads: {} trials, the last chose {}\n", t.world().thread_tuner().trials(),
+               t.world().thread_tuner().chosen());
 }
 
 }  // namespace
@@ -93,7 +101,7 @@ void run(double strain, int threads) {
 int main(int argc, char** argv) {
   grainlab::use_passive_wait_by_default(argv);  // as grainlab runs (core/wait_policy.h)
   double strain = 0.10;
-  std::vector<int> threads{1, 2};
+  std::vector<int> threads{1, 2, 0};
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--strain") && i + 1 < argc) {
       strain = std::stod(argv[++i]);

@@ -171,7 +171,8 @@ Command add_grains_index_command(CLI::App& grains) {
   cmd->add_option("--max-steps", o->measure.max_steps, "step cap per preparation phase (at most 399000)")
       ->check(CLI::Range(1000, 399000))
       ->capture_default_str();
-  cmd->add_option("--threads", o->threads, "worker threads; 0 = all cores")->capture_default_str();
+  cmd->add_option("--threads", o->threads, "worker threads; 0 = automatic (up to all cores, timed)")
+      ->capture_default_str();
   cmd->add_option("--json", o->json, "also write the figures, every preparation, to this JSON file");
   cmd->add_option("--keep", o->keep,
                   "keep the preparations in this folder as they run (the one under way every 600 s and on Ctrl-C, "

@@ -18,7 +18,9 @@ int main(int argc, char** argv) {
       "grains.\nSI units throughout (m, kg, s, N, Pa)."};
   app.require_subcommand(1);
   int threads = 0;
-  app.add_option("--threads", threads, "worker threads (default: all cores)");
+  app.add_option("--threads", threads,
+                 "at most this many worker threads (default: all cores); a run times which count is "
+                 "fastest unless its numerics.threads fixes the count");
 
   const std::vector<apps::Command> commands = {apps::add_grains_command(app),
                                                apps::add_run_command(app), apps::add_report_command(app),

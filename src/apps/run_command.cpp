@@ -159,12 +159,14 @@ int run(const RunOptions& o) {
                              : !spec.grains.folder.empty() ? "folder " + spec.grains.folder
                                                            : spec.grains.preset + " preset";
   fmt::print("grainlab run: {}, {} grains ({}), box {:.1f} x {:.1f} x {:.1f} mm, {:.0f} kPa, "
-             "dt {:.3g} s, density scaling {:g}{}, {} threads\n",
+             "dt {:.3g} s, density scaling {:g}{}, {}\n",
              spec.test, w.model.bodies.size(), source,
              spec.box.length * 1e3, spec.box.width * 1e3, spec.box.height * 1e3,
              spec.consolidation.normal_stress * 1e-3, test.time_step(), w.model.density_scale,
              shear_speed > 0 ? fmt::format(", shear speed {:.3g} mm/s", shear_speed * 1e3) : "",
-             resolve_threads(w.settings.threads));
+             w.settings.threads > 0 ? fmt::format("{} thread{}", w.settings.threads, w.settings.threads > 1 ? "s" : "")
+                                    : fmt::format("up to {} threads (the fastest count, timed as it runs)",
+                                                  resolve_threads(0)));
 
   Stopwatch clock, since_checkpoint, since_line;
   std::size_t written_rows = test.series().size();

@@ -28,16 +28,17 @@ inline void set_default_thread_count(int n) {
 // Calls f(i) for i in [0, n) on `threads` threads (0 = default). Chunks are
 // dynamic: loop bodies of uneven cost (narrowphase pairs) balance well; order
 // of calls is unspecified. Loops of at most one chunk, or of fewer than
-// min_parallel items, run serially: waking the threads costs tens of
-// microseconds, more than a few thousand cheap items take.
+// min_parallel items, or given one thread, run serially (no OpenMP region):
+// waking the threads costs tens of microseconds, more than a few thousand
+// cheap items take.
 template <typename F>
 void parallel_for(std::ptrdiff_t n, F&& f, std::ptrdiff_t chunk = 64, int threads = 0,
                   std::ptrdiff_t min_parallel = 0) {
-  if (n <= chunk || n < min_parallel) {
+  const int t = resolve_threads(threads);
+  if (n <= chunk || n < min_parallel || t == 1) {
     for (std::ptrdiff_t i = 0; i < n; ++i) f(i);
     return;
   }
-  const int t = resolve_threads(threads);
 #pragma omp parallel for schedule(dynamic, chunk) num_threads(t)
   for (std::ptrdiff_t i = 0; i < n; ++i) f(i);
 }
@@ -49,7 +50,7 @@ template <typename F>
 double parallel_max(std::ptrdiff_t n, F&& f, double init, std::ptrdiff_t min_parallel, int threads = 0) {
   double m = init;
   const int t = resolve_threads(threads);
-#pragma omp parallel for schedule(static) reduction(max : m) num_threads(t) if (n > min_parallel)
+#pragma omp parallel for schedule(static) reduction(max : m) num_threads(t) if (n > min_parallel && t > 1)
   for (std::ptrdiff_t i = 0; i < n; ++i) m = std::max(m, f(i));
   return m;
 }

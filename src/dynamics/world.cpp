@@ -194,6 +194,12 @@ void World::step(double dt) {
   }
 
   if (model.shapes.size() != shapes_classified_) classify_shapes();
+  // The thread count: the settings' own, or the tuner's (core/thread_tuner.h).
+  const bool tuned = settings.threads <= 0;
+  if (tuned && tuner_.max_threads() != resolve_threads(0))
+    tuner_ = ThreadTuner(resolve_threads(0), settings.thread_tuning);
+  step_threads_ = tuned ? tuner_.threads() : settings.threads;
+  const Stopwatch whole;
   Stopwatch sw;
   const auto lap = [&](Phase p) {
     profile[p] += sw.seconds();
@@ -216,6 +222,7 @@ void World::step(double dt) {
   bookkeeping();
   lap(Phase::Bookkeeping);
   ++profile.steps;
+  if (tuned) tuner_.record(whole.seconds());
 }
 
 void World::classify_shapes() {
@@ -239,7 +246,7 @@ void World::compute_bounds() {
         if (spheres) sphere_poses_[i] = {state.bodies[i].x, model.bodies[i].radius};
         return have_ref ? (state.bodies[i].x - state.x_at_rebuild[i]).squaredNorm() : 0.0;
       },
-      0.0, settings.serial_below, settings.threads);
+      0.0, settings.serial_below, step_threads_);
   const double max_move_sq = have_ref ? max_sq : std::numeric_limits<double>::infinity();
   // Grain bounds (bounding sphere plus half the skin) only when the candidate
   // pairs are due for a rebuild: a grain has moved more than skin/2.
@@ -428,7 +435,7 @@ void World::collide_list(std::vector<CandidatePair>& pairs, bool walls, std::vec
         }
         sub_counts_[k] = touching;
       },
-      32, settings.threads, spheres ? settings.serial_below : 0);
+      32, step_threads_, spheres ? settings.serial_below : 0);
   // Each pair's place in the new list: an exclusive prefix sum, so the list is
   // sorted by (a, b, sub) as the pairs are by (a, b), whatever the threads.
   std::size_t total = 0;
@@ -474,7 +481,7 @@ void World::collide_list(std::vector<CandidatePair>& pairs, bool walls, std::vec
           c.normal_force = 0;
         }
       },
-      64, settings.threads, spheres ? settings.serial_below : 0);
+      64, step_threads_, spheres ? settings.serial_below : 0);
   contacts.swap(next);
 }
 
@@ -532,11 +539,12 @@ void evaluate_block(std::vector<Contact>& list, std::size_t first, double dt, co
 // The law over all of `list`, block by block, in parallel (blocks fixed by
 // index, so the thread count changes nothing).
 template <typename Law, typename Sides>
-void evaluate_all(std::vector<Contact>& list, double dt, const Sides& sides, const WorldSettings& settings) {
+void evaluate_all(std::vector<Contact>& list, double dt, const Sides& sides, int threads,
+                  std::ptrdiff_t serial_below) {
   parallel_for(
       static_cast<std::ptrdiff_t>((list.size() + kLanes - 1) / kLanes),
       [&](std::ptrdiff_t k) { evaluate_block<Law>(list, static_cast<std::size_t>(k) * kLanes, dt, sides); }, 32,
-      settings.threads, settings.serial_below / kLanes);
+      threads, serial_below / kLanes);
 }
 
 }  // namespace
@@ -552,7 +560,7 @@ void World::forces_with(double dt) {
                         (sb.v + sb.w.cross(p - sb.x)) - (sa.v + sa.w.cross(p - sa.x)), sb.w - sa.w,
                         ma.mass * mb.mass / (ma.mass + mb.mass), ma.radius * mb.radius / (ma.radius + mb.radius)};
   };
-  evaluate_all<Law>(state.contacts, dt, grain_sides, settings);
+  evaluate_all<Law>(state.contacts, dt, grain_sides, step_threads_, settings.serial_below);
 
   // Walls: infinite mass and radius, translating at their prescribed velocity.
   const auto wall_sides = [&](const Contact& pc) {
@@ -562,7 +570,7 @@ void World::forces_with(double dt) {
     return ContactSides{&pair(model.walls[pc.a].material, mb.material),
                         (sb.v + sb.w.cross(p - sb.x)) - state.walls[pc.a].v, sb.w, mb.mass, mb.radius};
   };
-  evaluate_all<Law>(state.wall_contacts, dt, wall_sides, settings);
+  evaluate_all<Law>(state.wall_contacts, dt, wall_sides, step_threads_, settings.serial_below);
 
   // Serial sums in contact order: independent of the thread count.
   const std::size_t n = state.bodies.size();
@@ -602,7 +610,7 @@ void World::integrate(double dt) {
     integrate_rotation(s.q, s.w, torque_[i], m.inertia, m.inv_inertia, dt, isotropic);
     motion_[i] = s.v.squaredNorm() + s.w.squaredNorm();
   };
-  parallel_for(static_cast<std::ptrdiff_t>(n), body, 256, settings.threads, settings.serial_below);
+  parallel_for(static_cast<std::ptrdiff_t>(n), body, 256, step_threads_, settings.serial_below);
   for (WallState& w : state.walls) w.x += dt * w.v;
 }
 

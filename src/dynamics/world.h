@@ -10,6 +10,7 @@
 
 #include "collision/broadphase.h"
 #include "collision/posed_shape.h"
+#include "core/thread_tuner.h"
 #include "dynamics/model.h"
 #include "dynamics/profile.h"
 #include "dynamics/state.h"
@@ -90,6 +91,10 @@ class World {
   const std::vector<Mat3>& rotations() const { return rot_; }
   // Body i as the narrowphase sees it, as of the last step (for benches).
   PosedShape posed_body(Index i) const;
+  // Threads the last step ran on, and the tuner that chose them when
+  // settings.threads is 0 (core/thread_tuner.h).
+  int step_threads() const { return step_threads_; }
+  const ThreadTuner& thread_tuner() const { return tuner_; }
 
  private:
   void prepare();
@@ -111,6 +116,8 @@ class World {
 
   std::vector<Controller> controllers_;
   PhaseOverrides overrides_;
+  ThreadTuner tuner_;
+  int step_threads_ = 1;  // this step's thread count (settings.threads, or the tuner's)
   std::vector<PairCoefficients> pair_table_;  // model.pair() with the friction overrides
   SweepAndPrune sap_;
   bool prepared_ = false;

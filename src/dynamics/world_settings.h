@@ -3,6 +3,8 @@
 // the World's own thread count (never a process-wide setting).
 #pragma once
 
+#include "core/thread_tuner.h"
+
 #include <cstddef>
 
 namespace grainlab {
@@ -16,9 +18,12 @@ struct WorldSettings {
   // smallest grain's equivalent radius (overlaps larger than this are not
   // expected in a well-posed run).
   double expected_overlap_fraction = 0.01;
-  // Threads of every parallel loop of this World's step (0 = the OpenMP
-  // default, all cores). Results do not depend on it.
+  // Threads of every parallel loop of this World's step; 0 = automatic: up
+  // to all cores (the OpenMP default), the count whose steps run fastest,
+  // timed as the run goes (core/thread_tuner.h; `thread_tuning` sets its
+  // windows). Results do not depend on it.
   int threads = 0;
+  ThreadTuning thread_tuning;
   // Loops of cheap items (contact forces, integration, bounds, and every
   // per-pair loop when all grains are spheres) run serially below this many
   // items: waking a second thread costs tens of microseconds per loop, and

@@ -106,7 +106,8 @@ const std::array kFields{
     GL_FIELD("numerics", "time_step_fraction", numerics.time_step_fraction, "fraction of the critical step used when time_step = 0, in (0, 1]"),
     GL_FIELD("numerics", "density_scaling", numerics.density_scaling, "factor on inertia (not weight); 0 = automatic"),
     GL_FIELD("numerics", "inertial_number", numerics.inertial_number, "target I = gamma_dot d sqrt(rho / p) when shear.speed = 0"),
-    GL_FIELD("numerics", "threads", numerics.threads, "worker threads; 0 = all cores"),
+    GL_FIELD("numerics", "threads", numerics.threads,
+             "worker threads; 0 = automatic: up to all cores, the count whose steps run fastest, timed as the run goes"),
 
     GL_FIELD("output", "folder", output.folder, "where the run writes its files"),
     GL_FIELD("output", "strain_interval", output.strain_interval, "sample series.csv every this much shear strain (triaxial: axial strain)"),
@@ -462,7 +463,7 @@ void validate_spec(const DirectShearSpec& spec_in, const std::string& source, co
        nu.time_step_fraction, "in (0, 1]");
   need(nu.density_scaling >= 0, "numerics.density_scaling", nu.density_scaling, ">= 0 (0 = automatic)");
   need(nu.inertial_number > 0, "numerics.inertial_number", nu.inertial_number, "> 0 (quasi-static: below 1e-3)");
-  need(nu.threads >= 0, "numerics.threads", nu.threads, ">= 0 (0 = all cores)");
+  need(nu.threads >= 0, "numerics.threads", nu.threads, ">= 0 (0 = automatic)");
 
   const OutputSpec& o = spec.output;
   need_s(!o.folder.empty(), "output.folder", o.folder, "a folder name, not empty");

@@ -122,7 +122,7 @@ struct NumericsSpec {
   double density_scaling = 0;       // multiplies inertia (not weight); 0 = automatic
   double inertial_number = 9e-4;    // target I = gamma_dot d sqrt(rho S / p) when speed = 0: below
                                     // 1e-3 (quasi-static) with room for the stress to dip
-  int threads = 0;                  // 0 = all cores
+  int threads = 0;                  // 0 = automatic: up to all cores, timed (core/thread_tuner.h)
 };
 
 struct OutputSpec {

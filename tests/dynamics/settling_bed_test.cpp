@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <set>
 
 using namespace grainlab;
 
@@ -82,4 +83,37 @@ TEST(SettlingBed, OneTwoAndThreeThreadsGiveIdenticalStates) {
     EXPECT_EQ(many.settings.threads, threads);
     EXPECT_TRUE(testing_support::same_state_bits(one.state, many.state)) << "1 and " << threads << " threads differ";
   }
+}
+
+// threads = 0 leaves the count to the step's tuner (core/thread_tuner.h).
+// Here its windows are one step long and it holds nothing, so the count
+// changes every few steps: the state is still bit for bit the 1-thread one.
+TEST(SettlingBed, ThreadsChosenByTimingChangeNothingButTheSpeed) {
+  SettlingBedSpec spec = test_bed();
+  spec.grains = 320;
+  spec.hull_points = 38;
+  const auto run = [&](int threads, std::set<int>* used) {
+    SettlingBed bed = make_settling_bed(spec);
+    World& w = bed.world;
+    w.settings.threads = threads;
+    w.settings.serial_below = 0;
+    w.settings.thread_tuning.min_seconds = 0;
+    w.settings.thread_tuning.min_steps = 1;
+    w.settings.thread_tuning.hold_seconds = 0;
+    w.model.gravity *= 20;
+    const double dt = 0.2 * w.critical_time_step();
+    const int steps = static_cast<int>(0.03 / dt);
+    for (int i = 0; i < steps; ++i) {
+      w.step(dt);
+      if (used) used->insert(w.step_threads());
+    }
+    return bed.world;
+  };
+  const World one = run(1, nullptr);
+  std::set<int> used;
+  const World tuned = run(0, &used);
+  ASSERT_GE(tuned.thread_tuner().max_threads(), 2) << "ctest runs the tests with OMP_NUM_THREADS=2";
+  EXPECT_GT(tuned.thread_tuner().trials(), 10);
+  EXPECT_EQ(used, (std::set<int>{1, 2}));
+  EXPECT_TRUE(testing_support::same_state_bits(one.state, tuned.state));
 }
