@@ -74,6 +74,16 @@ void write_run_json(const LabTest& test, const std::filesystem::path& out, doubl
   j["phase"] = test.phase_name();
   for (const SummaryValue& v : test.summary()) (v.group.empty() ? j : j[v.group])[v.key] = v.value;
   j["timings"] = {{"wall_s", wall_s}, {"steps", w.state.step}, {"simulated_s", w.state.time}};
+  // The thread count: fixed, or chosen by timing (core/thread_tuner.h): the
+  // steps this sitting ran on each count.
+  nlohmann::json threads = {{"numerics_threads", w.settings.threads}};
+  if (w.settings.threads <= 0) {
+    const ThreadTuner& tuner = w.thread_tuner();
+    threads["trials"] = tuner.trials();
+    for (std::size_t k = 0; k < tuner.counts().size(); ++k)
+      threads["steps_on"][std::to_string(tuner.counts()[k])] = tuner.steps_run()[k];
+  }
+  j["timings"]["threads"] = threads;
   add_micromechanics_summary(j, test);
   j["specimen_preparation"] = preparation;
   write_json_file(out / "run.json", j);

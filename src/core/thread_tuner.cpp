@@ -12,6 +12,7 @@ ThreadTuner::ThreadTuner(int max_threads, ThreadTuning timing) : timing_(timing)
   }
   for (std::size_t c = 0; c < counts_.size(); ++c) order_.push_back(c);
   for (std::size_t c = counts_.size(); c-- > 0;) order_.push_back(c);
+  steps_run_.assign(counts_.size(), 0);
   start_trial();
 }
 
@@ -26,6 +27,7 @@ void ThreadTuner::start_trial() {
 }
 
 void ThreadTuner::record(double seconds) {
+  ++steps_run_[holding() ? best_ : order_[window_]];
   window_seconds_ += seconds;
   ++window_steps_;
   const bool window_done = window_steps_ >= timing_.min_steps && window_seconds_ >= timing_.min_seconds;

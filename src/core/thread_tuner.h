@@ -56,6 +56,9 @@ class ThreadTuner {
   // Trials finished so far; the count the last one chose.
   std::int64_t trials() const { return trials_; }
   int chosen() const { return counts_[best_]; }
+  // The candidate counts (most first) and the steps run on each so far.
+  const std::vector<int>& counts() const { return counts_; }
+  const std::vector<std::int64_t>& steps_run() const { return steps_run_; }
 
  private:
   bool holding() const { return window_ == order_.size(); }
@@ -66,6 +69,7 @@ class ThreadTuner {
   std::vector<std::size_t> order_;  // the trial's windows: candidate indices
   std::vector<double> seconds_;  // per candidate, over this trial's windows
   std::vector<std::int64_t> steps_;
+  std::vector<std::int64_t> steps_run_;  // per candidate, the whole run
   std::size_t window_ = 0;  // position in order_; order_.size() while holding
   double window_seconds_ = 0;
   int window_steps_ = 0;
