@@ -10,9 +10,9 @@
 // times during the shear, wall times).
 //
 //   build/bench_sphere_lab [--strain S] [--threads N]   (default: 0.10; 1, 2, then 0 = automatic)
-#include "core/wait_policy.h"
-#include "core/parallel.h"
+#include "core/thread_tuner.h"
 #include "core/timer.h"
+#include "core/wait_policy.h"
 #include "lab/direct_shear.h"
 #include "lab/sand_presets.h"
 
@@ -54,10 +54,7 @@ void run(double strain, int threads) {
   DirectShearTest t(spec);
   t.world().settings.threads = threads;
   const double beads = static_cast<double>(t.world().model.bodies.size());
-  fmt::print("\n{} beads, {}, dt {:.4g} s\n", beads,
-             threads > 0 ? fmt::format("{} thread{}", threads, threads > 1 ? "s" : "")
-                         : fmt::format("automatic threads (up to {})", grainlab::resolve_threads(0)),
-             t.time_step());
+  fmt::print("\n{} beads, {}, dt {:.4g} s\n", beads, grainlab::thread_count_label(threads), t.time_step());
   std::string phase = t.phase_name();
   std::int64_t phase_step = t.world().state.step;
   Stopwatch clock;

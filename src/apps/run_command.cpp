@@ -8,7 +8,7 @@
 #include "apps/report.h"
 #include "apps/run_preparation.h"
 #include "core/error.h"
-#include "core/parallel.h"
+#include "core/thread_tuner.h"
 #include "core/timer.h"
 #include "io/analysis_files.h"
 #include "core/atomic_file.h"
@@ -74,7 +74,6 @@ void write_run_json(const LabTest& test, const std::filesystem::path& out, doubl
   j["phase"] = test.phase_name();
   for (const SummaryValue& v : test.summary()) (v.group.empty() ? j : j[v.group])[v.key] = v.value;
   j["timings"] = {{"wall_s", wall_s}, {"steps", w.state.step}, {"simulated_s", w.state.time}};
-  // The thread count: fixed, or chosen by timing (core/thread_tuner.h): the
   // steps this sitting ran on each count.
   nlohmann::json threads = {{"numerics_threads", w.settings.threads}};
   if (w.settings.threads <= 0) {
@@ -174,9 +173,7 @@ int run(const RunOptions& o) {
              spec.box.length * 1e3, spec.box.width * 1e3, spec.box.height * 1e3,
              spec.consolidation.normal_stress * 1e-3, test.time_step(), w.model.density_scale,
              shear_speed > 0 ? fmt::format(", shear speed {:.3g} mm/s", shear_speed * 1e3) : "",
-             w.settings.threads > 0 ? fmt::format("{} thread{}", w.settings.threads, w.settings.threads > 1 ? "s" : "")
-                                    : fmt::format("up to {} threads (the fastest count, timed as it runs)",
-                                                  resolve_threads(0)));
+             thread_count_label(w.settings.threads));
 
   Stopwatch clock, since_checkpoint, since_line;
   std::size_t written_rows = test.series().size();
@@ -263,7 +260,7 @@ Command add_run_command(CLI::App& app) {
       "output.snapshot_interval of shear strain) and report/index.html to output.folder");
   cmd->add_option("file", o->file, "config file (TOML); see --print-defaults for every key with its unit");
   cmd->add_flag("--print-defaults", o->print_defaults, "print a complete, commented default config and exit");
-  cmd->add_flag("--default", o->use_defaults, "run the embedded default (a small box of sub-angular grains)");
+  cmd->add_flag("--default", o->use_defaults, "run the embedded default (a small box of rounded grains, Ottawa-like)");
   cmd->add_option("--test", o->test,
                   "the test of --default and --print-defaults: direct-shear (the default), oedometer or triaxial")
       ->check(CLI::IsMember(lab_test_names()));

@@ -1,9 +1,18 @@
 // The trial-and-hold choice of a step's thread count (see thread_tuner.h).
 #include "core/thread_tuner.h"
 
+#include "core/parallel.h"
+
+#include <fmt/format.h>
+
 #include <algorithm>
 
 namespace grainlab {
+
+std::string thread_count_label(int threads) {
+  if (threads > 0) return fmt::format("{} thread{}", threads, threads > 1 ? "s" : "");
+  return fmt::format("up to {} threads (the fastest count, timed as it runs)", resolve_threads(0));
+}
 
 ThreadTuner::ThreadTuner(int max_threads, ThreadTuning timing) : timing_(timing) {
   for (int n = std::max(max_threads, 1);; n /= 2) {

@@ -30,9 +30,14 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace grainlab {
+
+// How a run states its thread count `threads` (WorldSettings::threads):
+// "2 threads", or for 0 "up to N threads (the fastest count, timed as it runs)".
+std::string thread_count_label(int threads);
 
 // The tuner's windows (see above).
 struct ThreadTuning {

@@ -10,15 +10,16 @@
 namespace grainlab {
 
 const EmbeddedIndices& default_grain_indices() {
-  // Measured 2026-12-04 on the project's 2-core machine: `grainlab grains
-  // index --seeds 1 --threads 1` (the default config: sub-angular, 24 shapes
-  // of 200 faces, 0.707-0.841 mm, seed 1; index box 10 x 10 x 8 d_max, 1,336
-  // grains). e_min: frictionless deposition and compaction at 100 kPa,
-  // 19,850 steps, 312 s; e_max: deposition at friction 1.0, no compaction,
-  // 5,200 steps, 55 s (one thread, the machine shared).
+  // Measured 2026-12-04 on the project's 2-core machine by `grainlab run`
+  // of the default config (rounded, 24 shapes of 200 faces, 0.707-0.841 mm,
+  // seed 1) with own_e_min = own_e_max = 0, one thread, the machine shared
+  // (what `grainlab grains index --preset rounded --faces 200 --seeds 1`
+  // measures; index box 10 x 8 d_max, 1,185 grains). e_min: frictionless
+  // deposition and compaction at 100 kPa, 14,300 steps, 203 s; e_max:
+  // deposition at friction 1.0, no compaction, 3,450 steps, 42 s.
   static const EmbeddedIndices record{
-      0xb48d0467f846f3c2ull, 0x71768938u, 0.4023541157462909, 0.6830040673579161, 0.46911494675665133, 0.967490599074883,
-      "measured 2026-12-04 with `grainlab grains index --seeds 1` (seed 1, the default grains)"};
+      0xb6ca65bfe49419c6ull, 0x9b40bf1eu, 0.4128053050489928, 0.6653608803125799, 0.4950382620566238, 0.9332264019271701,
+      "measured 2026-12-04 with `grainlab run` of the default config (seed 1, the default grains)"};
   return record;
 }
 

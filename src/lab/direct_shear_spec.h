@@ -1,7 +1,7 @@
 // Everything a direct shear run needs, as plain values (SI units). The io
 // layer fills it from a TOML file (io/config.h); the lab runs it
 // (lab/direct_shear.h). Defaults are the embedded demo: a small box of
-// sub-angular grains sheared to 10 % strain under 100 kPa: 8.5 x 8.5 x 5.1 mm,
+// rounded grains sheared to 10 % strain under 100 kPa: 8.5 x 8.5 x 5.1 mm,
 // 10 x 6 largest grains (ASTM D3080), about 1230 grains of 200 faces, Dr 0.9
 // on their own index void ratios (io/embedded_indices.h).
 #pragma once
@@ -16,7 +16,7 @@
 namespace grainlab {
 
 struct GrainsSpec {
-  std::string preset = "sub-angular";  // glass-beads | rounded | sub-angular | angular
+  std::string preset = "rounded";      // glass-beads | rounded | sub-angular | angular
   std::string folder;                  // if set: import every STL/OBJ/PLY here instead
   int shapes = 24;                     // distinct shapes in the library (grains reuse them, scaled)
   int faces = 200;                     // face budget per grain shape (the paper's scans: 2000; 200 keeps
@@ -70,13 +70,13 @@ struct SpecimenSpec {
                                    // e_min/e_max of the real sand (docs/direct_shear.md, "Whose Dr")
   double own_e_max = 0;            // the grains' own loosest void ratio; 0 = measure it (lab/index_densities.h)
   double own_e_min = 0;            // the grains' own densest void ratio; 0 = measure it
-  double e_max = 0.86;             // lab index void ratios of the sand (Griffin sand, paper section 3)
-  double e_min = 0.53;
+  double e_max = 0.75;             // lab index void ratios of the sand (Ottawa sand, paper section 3)
+  double e_min = 0.52;
   double void_ratio = -1;          // if > 0: target void ratio, overrides Dr
   double tolerance = 0.02;         // accepted |e - e_target| (void ratio and lab-index targets)
   double relative_density_tolerance = 0.05;  // accepted |Dr - Dr_target| (own-index targets)
-  double deposition_friction = 0.04; // inter-grain friction while raining and compacting (lower: denser).
-                                     // 0.04 gives own Dr 0.90 with the default grains and box
+  double deposition_friction = 0.032; // inter-grain friction while raining and compacting (lower: denser).
+                                     // 0.032 gives own Dr 0.93 with the default grains and box
                                      // (docs/direct_shear.md, "The embedded default"); < 0: chosen by
                                      // bisection over trial preparations (lab/preparation_search.h), for
                                      // other grains or another target

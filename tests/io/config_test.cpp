@@ -286,7 +286,8 @@ TEST(Config, OldSpecimenKeysStillParse) {
   EXPECT_TRUE(own.own_indices_known());
   EXPECT_DOUBLE_EQ(own.target_void_ratio(), 0.7);
   EXPECT_EQ(own.specimen.deposition_friction, -1);  // chosen by bisection
-  EXPECT_EQ(parse_config("[specimen]\nrelative_density = 0.5\n", "d.toml").specimen.deposition_friction, 0.04);
+  EXPECT_EQ(parse_config("[specimen]\nrelative_density = 0.5\n", "d.toml").specimen.deposition_friction,
+            DirectShearSpec{}.specimen.deposition_friction);  // the default stays fixed
   // A void ratio overrides either index.
   EXPECT_FALSE(parse_config("[specimen]\nvoid_ratio = 0.6\n", "e.toml").targets_own_indices());
 }

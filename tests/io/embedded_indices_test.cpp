@@ -55,7 +55,7 @@ TEST(EmbeddedIndices, AreTakenOnlyForTheDefaultsIndexInputs) {
     return embedded_index_densities(s).has_value();
   };
   EXPECT_FALSE(other([](DirectShearSpec& s) { s.seed = 2; }));
-  EXPECT_FALSE(other([](DirectShearSpec& s) { s.grains.preset = "rounded"; }));
+  EXPECT_FALSE(other([](DirectShearSpec& s) { s.grains.preset = "sub-angular"; }));
   EXPECT_FALSE(other([](DirectShearSpec& s) { s.grains.faces = 1000; }));
   EXPECT_FALSE(other([](DirectShearSpec& s) { s.grains.d_max = 1e-3; }));
   EXPECT_FALSE(other([](DirectShearSpec& s) { s.grains.folder = "my_grains"; }));

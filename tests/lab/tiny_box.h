@@ -9,6 +9,7 @@ namespace grainlab::testing_support {
 
 inline DirectShearSpec tiny_box_spec() {
   DirectShearSpec spec;
+  spec.grains.preset = "sub-angular";  // the demo's grains until 2026-12-04; the golden run's
   spec.box.length = 3.5e-3;
   spec.box.width = 3.5e-3;
   spec.box.height = 2.5e-3;
