@@ -104,7 +104,7 @@ Preparation prepare_to_target(const DirectShearSpec& spec, const PreparationSear
   if (spec.own_indices_known()) {
     const auto& s = spec.specimen;
     const double f = (target - s.own_e_min) / (s.own_e_max - s.own_e_min);
-    u = std::clamp(f, 0.05, 0.95) * u_hi;
+    u = std::clamp(f, 0.05, 0.95) * to_u(std::min(kLoosestDepositionFriction, o.max_friction));
   } else {
     u = to_u(0.12);
   }

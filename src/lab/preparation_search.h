@@ -7,14 +7,14 @@
 // the trial that lands on the target IS the specimen (no extrapolation from
 // a smaller box), and the run continues from it.
 // The void ratio e(mu) grows with mu (friction holds the grains apart while
-// they settle): mu = 0 gives the densest specimen, mu_max (1.0) the loosest.
+// they settle): mu = 0 gives the densest specimen, mu_max (5) the loosest.
 // The search keeps a bracket [mu_lo, mu_hi] with e(mu_lo) < e_target <
 // e(mu_hi) and picks the next mu by linear interpolation of e in
 // u = mu / (mu + 0.1) (e changes most between mu = 0 and 0.3; in u the curve
 // is nearly straight), kept within the inner 80 % of the bracket so that it
 // always shrinks; an end not tried yet is bisected. The first guess takes e
-// linear in u between the own indices e_min (u = 0) and e_max (u(mu_max))
-// when they are known, else mu = 0.12.
+// linear in u between the own indices e_min (u = 0) and e_max (u at the
+// e_max preparation's friction, 1.0) when they are known, else mu = 0.12.
 // Accepted: |Dr - Dr_target| <= relative_density_tolerance on own indices
 // (bulk e), else |e - e_target| <= specimen.tolerance (whole specimen).
 // Stops with RunError (the trials, the closest, why, how to fix) when mu = 0
@@ -36,14 +36,25 @@
 
 namespace grainlab {
 
-// The highest deposition friction the preparation uses (the loosest end of
-// the search and the e_max preparation of lab/index_densities.h). Until the
+// The deposition friction of the e_max preparation (lab/index_densities.h),
+// and where the search's first guess puts e_max. Until the
 // critical step included the contact damping (dynamics/time_step.h),
 // deposition at friction 0.6 or 1.0 never came to rest (beads spun up to
 // 3e3 rad/s) and this was 0.4, where glass beads gave e_max = 0.626, barely
 // above e_min. Now glass beads at friction 1.0 come to rest in ~3600 steps
 // (550 beads, 8 d_max box) at bulk e_max = 0.715, a random loose packing.
 inline constexpr double kLoosestDepositionFriction = 1.0;
+
+// The loosest end of the search: higher than the e_max friction, because a
+// specimen is compacted under the cap at the consolidation stress and the
+// e_max packing is not (a loose deposition partly collapses under the
+// load). Measured 2026-12-05 (bench/bench_preparation_range, the demo's box
+// of glass beads, 100 kPa; own e_max 0.750 at friction 1.0): deposition at
+// friction 1.0 then compaction gave Dr 0.26 on the own indices, 1.72 gave
+// 0.21, 5 gave 0.10; so with the end at 1.0 beads could not be prepared at
+// Dr 0.2. As moist tamping does in the laboratory, the search may make a
+// specimen looser than the index e_max (Dr < 0 is possible).
+inline constexpr double kLoosestSearchFriction = 5.0;
 
 struct PreparationTrial {
   double friction = 0;          // deposition friction tried
@@ -60,7 +71,7 @@ using TrialPreparation =
     std::function<std::unique_ptr<DirectShearTest>(const DirectShearSpec& spec, double mu, PreparationTrial& out)>;
 
 struct PreparationSearchOptions {
-  double max_friction = kLoosestDepositionFriction;  // the loosest end of the search
+  double max_friction = kLoosestSearchFriction;  // the loosest end of the search
   int max_trials = 8;
   TrialPreparation trial;  // empty: trial_preparation below (tests put a model of e(mu) here)
   PreparationStore* store = nullptr;  // keeps the trials (trial_preparation below)
