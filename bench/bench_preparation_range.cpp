@@ -9,7 +9,7 @@
 //
 //   build/bench_preparation_range [--sands glass-beads,ottawa,griffin,crushed-limestone]
 //       [--folder DIR] [--targets 0.2,0.6,0.95] [--faces 200] [--seed 1]
-//       [--threads 1] [--max-friction 1] [--out runs/preparation_range]
+//       [--threads 1] [--max-friction 5] [--out runs/preparation_range]
 //
 // The box is the demo's (8.5 x 8.5 x 5.1 mm, 10 d_max across), the grains
 // 0.707-0.841 mm. Everything a preparation makes is kept under
@@ -67,14 +67,14 @@ int main(int argc, char** argv) {
   std::vector<double> targets = {0.2, 0.6, 0.95};
   std::string folder, out = "runs/preparation_range";
   int faces = 200, threads = 1;
-  double max_friction = kLoosestDepositionFriction;
+  double max_friction = kLoosestSearchFriction;
   std::uint64_t seed = 1;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     const bool has_value = i + 1 < argc;
     if (a == "--help" || a == "-h" || !has_value) {
       fmt::print("usage: {} [--sands a,b] [--folder DIR] [--targets 0.2,0.6,0.95] [--faces 200] [--seed 1] "
-                 "[--threads 1] [--max-friction 1] [--out DIR]\n(sands: {})\n",
+                 "[--threads 1] [--max-friction 5] [--out DIR]\n(sands: {})\n",
                  argv[0], fmt::join(sand_preset_names(), ", "));
       return a == "--help" || a == "-h" ? 0 : 2;
     }

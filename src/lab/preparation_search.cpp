@@ -99,12 +99,13 @@ Preparation prepare_to_target(const DirectShearSpec& spec, const PreparationSear
 
   Preparation p;
   double u_lo = 0, u_hi = to_u(o.max_friction);
+  const double u_index = to_u(std::min(kLoosestDepositionFriction, o.max_friction));  // where e_max was measured
   std::optional<double> e_lo, e_hi;  // measured e at the bracket's ends
   double u = 0;
   if (spec.own_indices_known()) {
     const auto& s = spec.specimen;
     const double f = (target - s.own_e_min) / (s.own_e_max - s.own_e_min);
-    u = std::clamp(f, 0.05, 0.95) * to_u(std::min(kLoosestDepositionFriction, o.max_friction));
+    u = std::clamp(f, 0.05, 0.95) * u_index;
   } else {
     u = to_u(0.12);
   }
@@ -165,8 +166,10 @@ Preparation prepare_to_target(const DirectShearSpec& spec, const PreparationSear
       u = u_lo + std::clamp(f, 0.1, 0.9) * (u_hi - u_lo);
     } else if (e_hi) {  // every trial too loose: towards frictionless
       u = u_hi <= 0.5 * u_max ? 0 : 0.5 * u_hi;
-    } else {  // every trial too dense: towards the loosest
-      u = u_lo >= 0.5 * u_max ? u_max : 0.5 * (u_lo + u_max);
+    } else if (u_lo < u_index) {  // every trial too dense: towards the e_max friction first
+      u = u_lo >= 0.5 * u_index ? u_index : 0.5 * (u_lo + u_index);
+    } else {  // the e_max friction too: the loosest end
+      u = u_max;
     }
   }
   if (why.empty() && std::isnan(best_e))

@@ -43,9 +43,9 @@ TEST(PreparationSearch, SpheresReachAWholeSpecimenVoidRatio) {
 // Dr 0.2, 0.6 and 0.95 on the beads' own indices within 0.05 (issue 10
 // item 3): the glass-beads sand preset in the demo's box (10 d_max across, 6
 // high, 100 kPa) with the run's own-index box (10 x 8, one seed), as
-// `grainlab run` prepares them. Measured 2026-12-05 (35 s on one thread,
-// the machine shared): Dr 0.2 -> 0.162 at friction 2.52 (4 trials), 0.6 ->
-// 0.625 (4), 0.95 -> 0.928 (1). With the search ending at the e_max
+// `grainlab run` prepares them. Measured 2026-12-05 (22 s on one thread,
+// the machine shared): Dr 0.2 -> 0.178 at friction 2.55 (5 trials), 0.6 ->
+// 0.632 (2), 0.95 -> 0.928 (1). With the search ending at the e_max
 // friction 1.0 it stopped at Dr 0.26 for 0.2 (run as a mutation;
 // lab/preparation_search.h, kLoosestSearchFriction). History: in a 6 d box the bulk e scattered by
 // +-0.03 between preparations at one friction (a bulk of about 20 grains).
@@ -139,6 +139,22 @@ TEST(PreparationSearch, AFailedTrialIsListedAndTheSearchGoesOn) {
   EXPECT_TRUE(p.trials.back().error.empty());
   EXPECT_NEAR(p.trials.back().void_ratio, 0.80, 0.002);
   EXPECT_NEAR(p.friction, p.trials.back().friction, 0);
+}
+
+TEST(PreparationSearch, TheLooseEndIsTriedAtTheEMaxFrictionFirst) {
+  // The model's e at friction 0.12, 1.0 and 5 is 0.828, 0.860 and 0.866:
+  // asked for e = 0.863, the search goes from its first guess to the e_max
+  // preparation's friction (1.0), and only when that is still too dense to
+  // the loosest end (kLoosestSearchFriction), then lands between.
+  auto model = std::make_shared<ModelPreparation>();
+  const Preparation p = prepare_to_target(void_ratio_target(0.863), trials_of(model));
+  ASSERT_GE(p.trials.size(), 4u);
+  EXPECT_NEAR(p.trials[0].friction, 0.12, 1e-9);
+  EXPECT_NEAR(p.trials[1].friction, kLoosestDepositionFriction, 1e-9);
+  EXPECT_NEAR(p.trials[2].friction, kLoosestSearchFriction, 1e-9);
+  EXPECT_NEAR(p.trials.back().void_ratio, 0.863, 0.002);
+  EXPECT_GT(p.friction, kLoosestDepositionFriction);
+  EXPECT_LT(p.friction, kLoosestSearchFriction);
 }
 
 TEST(PreparationSearch, EveryTrialFailingStopsWithTheTrialsAndWhy) {
