@@ -4,7 +4,8 @@
 // seed, as `grainlab run` does) and the deposition friction is searched
 // (lab/preparation_search.h) for each target Dr on those indices. Prints
 // every trial (friction, bulk e, Dr) and one table: target, reached Dr,
-// friction, trials, wall time, or why the search stopped. Not a test: it
+// friction, trials, the trials' wall time (one thread; a kept trial counts
+// its earlier sittings), or why the search stopped. Not a test: it
 // prints figures (minutes per preparation of 200-face grains).
 //
 //   build/bench_preparation_range [--sands glass-beads,ottawa,griffin,crushed-limestone]
@@ -13,9 +14,13 @@
 //
 // The box is the demo's (8.5 x 8.5 x 5.1 mm, 10 d_max across), the grains
 // 0.707-0.841 mm. Everything a preparation makes is kept under
-// OUT/<class>/ (index_densities.json, trial_friction_*.bin): a run stopped
-// with Ctrl-C or killed goes on from there when started again, and trials
-// at the same friction are shared between targets.
+// OUT/<class>/ (index_densities.json, index_*.bin, trial_friction_*.bin,
+// every 10 minutes and at each preparation's end): a killed run goes on
+// from there when started again, and trials at one friction are shared
+// between targets. The imported grains of docs/direct_shear.md are 24
+// grains segmented from a synthetic CT scan:
+//   grainlab ct synth --out scan.nrrd --size 200 --grains 24 --touching 4 --seed 5
+//   grainlab ct segment scan.nrrd --out ct_grains   (then --folder ct_grains)
 #include "core/error.h"
 #include "core/timer.h"
 #include "io/kept_preparations.h"
@@ -63,6 +68,7 @@ void say(const std::string& line) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);  // a line at a time into a log
   std::vector<std::string> sands = sand_preset_names();
   std::vector<double> targets = {0.2, 0.6, 0.95};
   std::string folder, out = "runs/preparation_range";
@@ -73,14 +79,14 @@ int main(int argc, char** argv) {
     const std::string a = argv[i];
     const bool has_value = i + 1 < argc;
     if (a == "--help" || a == "-h" || !has_value) {
-      fmt::print("usage: {} [--sands a,b] [--folder DIR] [--targets 0.2,0.6,0.95] [--faces 200] [--seed 1] "
+      fmt::print("usage: {} [--sands a,b] [--folder DIR] (--sands "" with --folder: the folder alone) [--targets 0.2,0.6,0.95] [--faces 200] [--seed 1] "
                  "[--threads 1] [--max-friction 5] [--out DIR]\n(sands: {})\n",
                  argv[0], fmt::join(sand_preset_names(), ", "));
       return a == "--help" || a == "-h" ? 0 : 2;
     }
     const std::string v = argv[++i];
     if (a == "--sands") sands = split(v);
-    else if (a == "--folder") folder = v, sands.clear();
+    else if (a == "--folder") folder = v;
     else if (a == "--targets") {
       targets.clear();
       for (const std::string& t : split(v)) targets.push_back(std::stod(t));
@@ -143,7 +149,7 @@ int main(int argc, char** argv) {
         s.specimen.relative_density = dr;
         s.specimen.deposition_friction = -1;
         fmt::print("{}: target Dr {:.2f}\n", name, dr);
-        Stopwatch search;
+        const Stopwatch search;
         PreparationSearchOptions o;
         o.store = &store;
         o.max_friction = max_friction;
@@ -152,11 +158,13 @@ int main(int argc, char** argv) {
           row.reached = p.test->achieved_own_relative_density();
           row.friction = p.friction;
           row.trials = p.trials.size();
+          row.wall_s = 0;  // the trials' own times (a kept trial's earlier sittings included)
+          for (const PreparationTrial& t : p.trials) row.wall_s += t.wall_s;
         } catch (const RunError& e) {
           row.why = e.what();
+          row.wall_s = search.seconds();
           fmt::print("  stopped: {}\n", row.why);
         }
-        row.wall_s = search.seconds();
         rows.push_back(row);
         std::fflush(stdout);
       }
