@@ -16,8 +16,8 @@
 // 0.707-0.841 mm. Everything a preparation makes is kept under
 // OUT/<class>/ (index_densities.json, index_*.bin, trial_friction_*.bin,
 // every 10 minutes and at each preparation's end): a killed run goes on
-// from there when started again, and trials at one friction are shared
-// between targets. The imported grains of docs/direct_shear.md are 24
+// from there when started again (the target sets the grain count, so each
+// target's trials are its own). The imported grains of docs/direct_shear.md are 24
 // grains segmented from a synthetic CT scan:
 //   grainlab ct synth --out scan.nrrd --size 200 --grains 24 --touching 4 --seed 5
 //   grainlab ct segment scan.nrrd --out ct_grains   (then --folder ct_grains)
