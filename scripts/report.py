@@ -1184,14 +1184,28 @@ def oedometer_report(run, out_dir):
 # deviator_stress_Pa, mean_stress_Pa, stress_ratio q/p', side_stress_error,
 # void_ratio, ...) and run.json's "triaxial" group (peak_stress_ratio,
 # axial_strain_at_peak, peak_friction_angle_deg, critical_stress_ratio,
-# critical_friction_angle_deg, peak_dilatancy_angle_deg, e50_Pa,
+# critical_friction_angle_deg, critical_dilatancy_angle_deg (over the same
+# last fifth; absent in runs before 2026-12-05), peak_dilatancy_angle_deg, e50_Pa,
 # void_ratio_at_shear, final_void_ratio).
+
+def critical_state_label(run):
+    """Legend of the last fifth's q/p' in a triaxial: a critical state only
+    where the specimen no longer changes volume there, so its dilatancy angle
+    is shown beside it (runs before 2026-12-05 lack it)."""
+    t = lambda k: num(get(run.info, "triaxial", k))
+    eta, phi, psi = t("critical_stress_ratio"), fmt(t("critical_friction_angle_deg"), ".1f"), \
+        t("critical_dilatancy_angle_deg")
+    if psi is None:
+        return f"critical state (last fifth) {eta:.3f} ($\\phi$ = {phi}°)"
+    return f"last fifth {eta:.3f} ($\\phi$ = {phi}°, $\\psi$ = {psi:.1f}°; critical state: $\\psi$ = 0)"
+
 
 def fig_triaxial_curves(run, out_dir):
     f = Figure("Stress ratio and volumetric strain against axial strain", "ASTM D7181",
-               "Top: q/p' against axial strain, with the peak (averaged over 1 % of strain) and the critical "
-               "state (the last fifth) from run.json; bottom: volumetric strain, compression positive, so "
-               "dilation falls.")
+               "Top: q/p' against axial strain, with the peak (averaged over 1 % of strain) and the mean over "
+               "the last fifth of the strain from run.json, with the dilatancy angle there: that mean is the "
+               "critical state only if the angle is about 0 (a specimen still dilating gives an upper bound); "
+               "bottom: volumetric strain, compression positive, so dilation falls.")
     ea, eta, ev = run.col("axial_strain"), run.col("stress_ratio"), run.col("volumetric_strain")
     if ea is None or eta is None or ev is None:
         return f.missing("series.csv columns axial_strain, stress_ratio and volumetric_strain")
@@ -1203,8 +1217,7 @@ def fig_triaxial_curves(run, out_dir):
                 label=f"peak {t('peak_stress_ratio'):.3f} ($\\phi_p$ = {fmt(t('peak_friction_angle_deg'), '.1f')}°)")
     if t("critical_stress_ratio") is not None:
         a1.axhline(t("critical_stress_ratio"), color="#555555", ls="--", lw=1.0,
-                   label=f"critical state {t('critical_stress_ratio'):.3f} ($\\phi_{{cs}}$ = "
-                         f"{fmt(t('critical_friction_angle_deg'), '.1f')}°)")
+                   label=critical_state_label(run))
     a1.set_ylabel("stress ratio q/p' (–)")
     a1.legend(loc="lower right")
     a1.set_title("Drained triaxial compression")
@@ -1245,7 +1258,10 @@ def triaxial_results_rows(run):
     return [
         ("peak friction angle &phi;'<sub>p</sub> (q/p')", fmt(t("peak_friction_angle_deg"), ".2f", "deg") +
          f" at &epsilon;<sub>a</sub> = {fmt(100 * (num(t('axial_strain_at_peak')) or float('nan')), '.2f', '%')}"),
-        ("critical-state friction angle &phi;'<sub>cs</sub>", fmt(t("critical_friction_angle_deg"), ".2f", "deg")),
+        ("friction angle over the last fifth (&phi;'<sub>cs</sub> if at constant volume)",
+         fmt(t("critical_friction_angle_deg"), ".2f", "deg")),
+        ("dilatancy angle over the last fifth (0 at a critical state)",
+         fmt(t("critical_dilatancy_angle_deg"), ".2f", "deg")),
         ("peak dilatancy angle &psi;<sub>p</sub>", fmt(t("peak_dilatancy_angle_deg"), ".2f", "deg")),
         ("secant modulus E<sub>50</sub>", fmt(1e-6 * (num(t("e50_Pa")) or float("nan")), ".4g", "MPa")),
         ("void ratio at the start of shear / at the end", f"{fmt(t('void_ratio_at_shear'), '.4f')} / "

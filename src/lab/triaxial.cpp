@@ -34,6 +34,11 @@ double friction_angle_deg(double eta) {  // triaxial compression: sin phi = 3 et
   return std::asin(std::clamp(3 * eta / (6 + eta), -1.0, 1.0)) * 180 / std::numbers::pi;
 }
 
+// Vermeer and de Borst's triaxial dilatancy angle for r = d eps_v / d eps_a.
+double dilatancy_angle_deg(double r) {
+  return std::asin(std::clamp(-r / (2 - r), -1.0, 1.0)) * 180 / std::numbers::pi;
+}
+
 }  // namespace
 
 const std::vector<std::string>& triaxial_series_columns() {
@@ -74,6 +79,15 @@ TriaxialSummary summarise_triaxial(const std::vector<std::vector<double>>& rows)
     if (r[AxialStrain] >= 0.8 * last) sum += r[Ratio], ++n;
   s.critical_stress_ratio = sum / n;
   s.critical_friction_angle_deg = friction_angle_deg(s.critical_stress_ratio);
+  // Dilatancy over the last fifth: least-squares slope of eps_v on eps_a.
+  double ma = 0, mv = 0;
+  for (const auto& r : rows)
+    if (r[AxialStrain] >= 0.8 * last) ma += r[AxialStrain] / n, mv += r[VolumetricStrain] / n;
+  double saa = 0, sav = 0;
+  for (const auto& r : rows)
+    if (r[AxialStrain] >= 0.8 * last)
+      saa += (r[AxialStrain] - ma) * (r[AxialStrain] - ma), sav += (r[AxialStrain] - ma) * (r[VolumetricStrain] - mv);
+  s.critical_dilatancy_angle_deg = saa > 0 ? dilatancy_angle_deg(sav / saa) : kNaN;
   // Peak dilatancy: r = d eps_v / d eps_a over 1 % of axial strain.
   s.peak_dilatancy_angle_deg = kNaN;
   for (std::size_t i = 0, j = 0; i < rows.size(); ++i) {
@@ -82,7 +96,7 @@ TriaxialSummary summarise_triaxial(const std::vector<std::vector<double>>& rows)
     if (j == rows.size()) break;
     const double r = (rows[j][VolumetricStrain] - rows[i][VolumetricStrain]) /
                      (rows[j][AxialStrain] - rows[i][AxialStrain]);
-    const double psi = std::asin(std::clamp(-r / (2 - r), -1.0, 1.0)) * 180 / std::numbers::pi;
+    const double psi = dilatancy_angle_deg(r);
     if (!(psi <= s.peak_dilatancy_angle_deg)) s.peak_dilatancy_angle_deg = psi;
   }
   // E50: where q first reaches half its peak (raw samples), interpolated.
@@ -285,6 +299,7 @@ std::vector<SummaryValue> TriaxialTest::summary() const {
   v.push_back({"triaxial", "peak_friction_angle_deg", t.peak_friction_angle_deg});
   v.push_back({"triaxial", "critical_stress_ratio", t.critical_stress_ratio});
   v.push_back({"triaxial", "critical_friction_angle_deg", t.critical_friction_angle_deg});
+  v.push_back({"triaxial", "critical_dilatancy_angle_deg", t.critical_dilatancy_angle_deg});
   v.push_back({"triaxial", "peak_dilatancy_angle_deg", t.peak_dilatancy_angle_deg});
   v.push_back({"triaxial", "e50_Pa", t.e50_Pa});
   v.push_back({"triaxial", "final_void_ratio", t.final_void_ratio});
@@ -312,10 +327,11 @@ std::string TriaxialTest::phase_note() const {
 
 std::string TriaxialTest::result_line() const {
   const TriaxialSummary t = summarise_triaxial(p_.rows);
-  return fmt::format("peak friction angle {:.1f} deg (q/p' {:.3f}) at axial strain {:.3f}; critical state {:.1f} deg; "
-                     "peak dilatancy angle {:.1f} deg; E50 {:.3g} MPa",
+  return fmt::format("peak friction angle {:.1f} deg (q/p' {:.3f}) at axial strain {:.3f}; over the last fifth "
+                     "{:.1f} deg with dilatancy {:.1f} deg (a critical state has 0); peak dilatancy angle {:.1f} deg; "
+                     "E50 {:.3g} MPa",
                      t.peak_friction_angle_deg, t.peak_stress_ratio, t.strain_at_peak, t.critical_friction_angle_deg,
-                     t.peak_dilatancy_angle_deg, t.e50_Pa * 1e-6);
+                     t.critical_dilatancy_angle_deg, t.peak_dilatancy_angle_deg, t.e50_Pa * 1e-6);
 }
 
 BandGeometry TriaxialTest::band_geometry() const {

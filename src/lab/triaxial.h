@@ -48,7 +48,11 @@
 // the largest swing of a small specimen's noise) and at the critical state
 // (eta averaged over the last fifth of the strain); the peak dilatancy angle, sin psi =
 // -r / (2 - r) with r = d eps_v / d eps_a over 1 % of axial strain (Vermeer
-// and de Borst's triaxial form; dilation makes r negative); the secant
+// and de Borst's triaxial form; dilation makes r negative); the dilatancy
+// angle over that last fifth, from the least-squares slope r of eps_v on
+// eps_a there: a critical state has none, so a specimen still dilating at
+// the end has not reached one and its "critical" eta is an upper bound
+// (reported beside it, not decided by a threshold); the secant
 // modulus E50 = (q_peak / 2) / eps_a where q first reaches half its peak.
 //
 // Rigid walls against a membrane: a lab specimen's flexible membrane lets
@@ -82,6 +86,7 @@ struct TriaxialSummary {
   double peak_friction_angle_deg = 0;
   double critical_stress_ratio = 0;   // eta over the last fifth of the strain
   double critical_friction_angle_deg = 0;
+  double critical_dilatancy_angle_deg = 0;  // over the same last fifth: 0 at a critical state
   double peak_dilatancy_angle_deg = 0;
   double e50_Pa = 0;                  // secant modulus at half the peak deviator
   double final_void_ratio = 0;

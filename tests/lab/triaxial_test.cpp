@@ -44,9 +44,26 @@ TEST(Triaxial, SummaryOfKnownCurves) {
   EXPECT_NEAR(s.critical_stress_ratio, 0.9, 1e-12);
   EXPECT_NEAR(s.critical_friction_angle_deg, deg(std::asin(2.7 / 6.9)), 1e-9);
   EXPECT_NEAR(s.peak_dilatancy_angle_deg, deg(std::asin(0.2)), 1e-9);
+  // Still dilating at r = -0.5 over the last fifth: not a critical state.
+  EXPECT_NEAR(s.critical_dilatancy_angle_deg, deg(std::asin(0.2)), 1e-9);
   EXPECT_NEAR(s.e50_Pa, 60e3 / 0.01, 1e-3);  // half of q_peak = 120 kPa is 60 kPa, reached at 1 %
   EXPECT_GE(s.strain_at_peak, 0.02 - 1e-12);
   EXPECT_LE(s.strain_at_peak, 0.04 + 1e-12);
+}
+
+TEST(Triaxial, DilatancyOverTheLastFifthIsZeroOnlyAtConstantVolume) {
+  // eps_v dilates at r = -0.3 to 12 %, then stays constant to 20 %: the
+  // last fifth (16-20 %) is at constant volume, psi there 0; a run stopped
+  // at 12 % is still dilating there, psi = asin(0.3 / 2.3).
+  std::vector<std::vector<double>> rows;
+  for (int i = 0; i <= 200; ++i) {
+    const double ea = 0.001 * i;
+    const double ev = -0.3 * std::min(ea, 0.12);
+    rows.push_back(row(ea, ev, ea == 0 ? 1e-9 : 100e3, 100e3, 0.7));
+  }
+  EXPECT_NEAR(summarise_triaxial(rows).critical_dilatancy_angle_deg, 0.0, 1e-9);
+  rows.resize(121);
+  EXPECT_NEAR(summarise_triaxial(rows).critical_dilatancy_angle_deg, deg(std::asin(0.3 / 2.3)), 1e-9);
 }
 
 TEST(Triaxial, BeadsHoldTheCellPressureAndTheIdentities) {
