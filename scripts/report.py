@@ -1232,7 +1232,8 @@ def fig_stress_path(run, out_dir):
     f = Figure("Stress path in p'-q", "ASTM D7181",
                "The deviator stress q against the mean effective stress p' during shear (a drained test at "
                "constant &sigma;<sub>3</sub> follows a line of slope 3 from the isotropic state); the dashed line "
-               "is the critical-state line q = &eta;<sub>cs</sub> p'.")
+               "is q = &eta; p' with &eta; the q/p' of the last fifth of the strain: the critical-state line where "
+               "the specimen no longer changes volume there (see the dilatancy angle in the table).")
     p, q = run.col("mean_stress_Pa"), run.col("deviator_stress_Pa")
     if p is None or q is None:
         return f.missing("series.csv columns mean_stress_Pa and deviator_stress_Pa")
