@@ -3,6 +3,7 @@
 #include "lab/oedometer.h"
 
 #include "core/error.h"
+#include "core/line_fit.h"
 
 #include <algorithm>
 #include <cmath>
@@ -66,15 +67,12 @@ OedometerSummary summarise_oedometer(const std::vector<std::vector<double>>& all
   // n of M ~ sigma^n: least squares of log M on the log mean stress of each
   // loading increment but the first, which starts from the preparation's
   // stress state (K0 0.73-0.90 after consolidation) and rearranges it.
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  int n = 0;
+  LineFit fit;
   for (std::size_t i = 2; i <= last_load; ++i) {
     const double m = rows[i][Modulus];
-    if (!(m > 0)) continue;
-    const double x = std::log(0.5 * (rows[i][Vertical] + rows[i - 1][Vertical])), y = std::log(m);
-    sx += x, sy += y, sxx += x * x, sxy += x * y, ++n;
+    if (m > 0) fit.add(std::log(0.5 * (rows[i][Vertical] + rows[i - 1][Vertical])), std::log(m));
   }
-  if (n >= 2 && n * sxx - sx * sx > 0) s.modulus_stress_exponent = (n * sxy - sx * sy) / (n * sxx - sx * sx);
+  if (fit.n >= 2) s.modulus_stress_exponent = fit.slope();
   return s;
 }
 

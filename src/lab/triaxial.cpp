@@ -3,6 +3,7 @@
 #include "lab/triaxial.h"
 
 #include "core/error.h"
+#include "core/line_fit.h"
 
 #include <algorithm>
 #include <cmath>
@@ -71,23 +72,16 @@ TriaxialSummary summarise_triaxial(const std::vector<std::vector<double>>& rows)
   s.peak_stress_ratio = best;
   s.strain_at_peak = rows[peak][AxialStrain];
   s.peak_friction_angle_deg = friction_angle_deg(s.peak_stress_ratio);
-  // Critical state: eta over the last fifth of the axial strain.
+  // Critical state: eta over the last fifth of the axial strain, and the
+  // dilatancy there from the least-squares slope of eps_v on eps_a.
   const double last = rows.back()[AxialStrain];
   double sum = 0;
-  int n = 0;
+  LineFit volume;
   for (const auto& r : rows)
-    if (r[AxialStrain] >= 0.8 * last) sum += r[Ratio], ++n;
-  s.critical_stress_ratio = sum / n;
+    if (r[AxialStrain] >= 0.8 * last) sum += r[Ratio], volume.add(r[AxialStrain], r[VolumetricStrain]);
+  s.critical_stress_ratio = sum / volume.n;
   s.critical_friction_angle_deg = friction_angle_deg(s.critical_stress_ratio);
-  // Dilatancy over the last fifth: least-squares slope of eps_v on eps_a.
-  double ma = 0, mv = 0;
-  for (const auto& r : rows)
-    if (r[AxialStrain] >= 0.8 * last) ma += r[AxialStrain] / n, mv += r[VolumetricStrain] / n;
-  double saa = 0, sav = 0;
-  for (const auto& r : rows)
-    if (r[AxialStrain] >= 0.8 * last)
-      saa += (r[AxialStrain] - ma) * (r[AxialStrain] - ma), sav += (r[AxialStrain] - ma) * (r[VolumetricStrain] - mv);
-  s.critical_dilatancy_angle_deg = saa > 0 ? dilatancy_angle_deg(sav / saa) : kNaN;
+  s.critical_dilatancy_angle_deg = dilatancy_angle_deg(volume.slope());  // NaN stays NaN
   // Peak dilatancy: r = d eps_v / d eps_a over 1 % of axial strain.
   s.peak_dilatancy_angle_deg = kNaN;
   for (std::size_t i = 0, j = 0; i < rows.size(); ++i) {
