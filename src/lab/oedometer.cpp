@@ -72,7 +72,7 @@ OedometerSummary summarise_oedometer(const std::vector<std::vector<double>>& all
     const double m = rows[i][Modulus];
     if (m > 0) fit.add(std::log(0.5 * (rows[i][Vertical] + rows[i - 1][Vertical])), std::log(m));
   }
-  if (fit.n >= 2) s.modulus_stress_exponent = fit.slope();
+  s.modulus_stress_exponent = fit.slope();  // NaN below two increments
   return s;
 }
 
