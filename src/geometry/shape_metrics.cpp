@@ -26,6 +26,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace grainlab {
@@ -163,64 +164,109 @@ std::vector<Vec2> silhouette_outline(std::span<const Vec2> points, std::span<con
   const Vec2 origin = lo - Vec2(2 * pixel, 2 * pixel);
   const int nx = static_cast<int>(std::ceil((hi.x() - origin.x()) / pixel)) + 2;
   const int ny = static_cast<int>(std::ceil((hi.y() - origin.y()) / pixel)) + 2;
-  std::vector<unsigned char> in(static_cast<std::size_t>(nx) * ny, 0);
-  // Fill every pixel whose centre lies in a projected triangle (either winding).
+  // Coverage of each pixel: the fraction of its kSub x kSub sample points that
+  // lie in a projected triangle (either winding).
+  constexpr int kSub = 4;
+  const int sx = nx * kSub, sy = ny * kSub;
+  const double sample = pixel / kSub;
+  std::vector<unsigned char> in(static_cast<std::size_t>(sx) * sy, 0);
   for (const Face& f : faces) {
-    const Vec2 a = (points[f[0]] - origin) / pixel, b = (points[f[1]] - origin) / pixel,
-               c = (points[f[2]] - origin) / pixel;
-    const double area = cross2(b - a, c - a);
-    if (area == 0) continue;
-    const int x0 = std::max(0, static_cast<int>(std::floor(std::min({a.x(), b.x(), c.x()}))));
-    const int x1 = std::min(nx - 1, static_cast<int>(std::ceil(std::max({a.x(), b.x(), c.x()}))));
-    const int y0 = std::max(0, static_cast<int>(std::floor(std::min({a.y(), b.y(), c.y()}))));
-    const int y1 = std::min(ny - 1, static_cast<int>(std::ceil(std::max({a.y(), b.y(), c.y()}))));
-    const double s = area > 0 ? 1.0 : -1.0;
+    const Vec2 v[3] = {(points[f[0]] - origin) / sample, (points[f[1]] - origin) / sample,
+                       (points[f[2]] - origin) / sample};
+    if (cross2(v[1] - v[0], v[2] - v[0]) == 0) continue;
+    // Scanline fill: on each sample row, the samples between the triangle's edges.
+    const double ylo = std::min({v[0].y(), v[1].y(), v[2].y()}), yhi = std::max({v[0].y(), v[1].y(), v[2].y()});
+    const int y0 = std::max(0, static_cast<int>(std::ceil(ylo - 0.5)));
+    const int y1 = std::min(sy - 1, static_cast<int>(std::floor(yhi - 0.5)));
     for (int y = y0; y <= y1; ++y) {
-      for (int x = x0; x <= x1; ++x) {
-        const Vec2 q(x + 0.5, y + 0.5);
-        if (s * cross2(b - a, q - a) >= 0 && s * cross2(c - b, q - b) >= 0 &&
-            s * cross2(a - c, q - c) >= 0) {
-          in[static_cast<std::size_t>(y) * nx + x] = 1;
+      const double yc = y + 0.5;
+      double xl = std::numeric_limits<double>::infinity(), xr = -xl;
+      for (int k = 0; k < 3; ++k) {
+        const Vec2& a = v[k];
+        const Vec2& b = v[(k + 1) % 3];
+        if (a.y() == b.y() || yc < std::min(a.y(), b.y()) || yc > std::max(a.y(), b.y())) continue;
+        const double x = a.x() + (yc - a.y()) * (b.x() - a.x()) / (b.y() - a.y());
+        xl = std::min(xl, x);
+        xr = std::max(xr, x);
+      }
+      const int x0 = std::max(0, static_cast<int>(std::ceil(xl - 0.5)));
+      const int x1 = std::min(sx - 1, static_cast<int>(std::floor(xr - 0.5)));
+      if (x0 <= x1) std::fill_n(in.begin() + static_cast<std::ptrdiff_t>(y) * sx + x0, x1 - x0 + 1, 1);
+    }
+  }
+  std::vector<double> cover(static_cast<std::size_t>(nx) * ny, 0.0);
+  for (int y = 0; y < sy; ++y) {
+    for (int x = 0; x < sx; ++x) {
+      cover[static_cast<std::size_t>(y / kSub) * nx + x / kSub] += in[static_cast<std::size_t>(y) * sx + x];
+    }
+  }
+  for (double& c : cover) c /= kSub * kSub;
+  // Marching squares on the coverage at the pixel centres, iso-level 1/2, with
+  // the crossings interpolated linearly: a sub-pixel outline whose length is
+  // the boundary's, not a staircase's (a staircase is up to 4/pi longer on
+  // diagonals, which would skew the arc-length resampling of outline_roundness).
+  // Cell (x, y) has corners k = 0..3 at (x, y), (x+1, y), (x+1, y+1), (x, y+1),
+  // counter-clockwise; edge k runs from corner k to corner k+1. Each crossing is
+  // named by its grid edge (2 per pixel centre: to the right, and up).
+  auto value = [&](int x, int y) { return cover[static_cast<std::size_t>(y) * nx + x]; };
+  auto centre = [&](int x, int y) -> Vec2 { return origin + Vec2((x + 0.5) * pixel, (y + 0.5) * pixel); };
+  const std::size_t edges = 2 * static_cast<std::size_t>(nx) * ny;
+  std::vector<int> next(edges, -1);
+  std::vector<Vec2> point(edges);
+  constexpr int kCorner[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  for (int y = 0; y + 1 < ny; ++y) {
+    for (int x = 0; x + 1 < nx; ++x) {
+      double v[4];
+      bool inside[4];
+      int count = 0;
+      for (int k = 0; k < 4; ++k) {
+        v[k] = value(x + kCorner[k][0], y + kCorner[k][1]);
+        inside[k] = v[k] > 0.5;
+        count += inside[k];
+      }
+      if (count == 0 || count == 4) continue;
+      int id[4] = {-1, -1, -1, -1};
+      for (int k = 0; k < 4; ++k) {
+        const int j = (k + 1) % 4;
+        if (inside[k] == inside[j]) continue;
+        const int ax = x + kCorner[k][0], ay = y + kCorner[k][1], bx = x + kCorner[j][0], by = y + kCorner[j][1];
+        const int gx = std::min(ax, bx), gy = std::min(ay, by);
+        id[k] = 2 * (gy * nx + gx) + (ay == by ? 0 : 1);
+        const double t = (0.5 - v[k]) / (v[j] - v[k]);
+        point[id[k]] = centre(ax, ay) + t * (centre(bx, by) - centre(ax, ay));
+      }
+      // Each in->out crossing (counter-clockwise round the cell) leads to an
+      // out->in crossing, with the inside on the left: the next one round the
+      // cell, or in a saddle whose centre is outside, the previous one.
+      const bool centre_inside = 0.25 * (v[0] + v[1] + v[2] + v[3]) > 0.5;
+      for (int k = 0; k < 4; ++k) {
+        if (id[k] < 0 || !inside[k]) continue;
+        for (int step = 1; step < 4; ++step) {
+          const int j = count == 2 && inside[0] == inside[2] && !centre_inside ? (k - step + 4) % 4 : (k + step) % 4;
+          if (id[j] >= 0 && !inside[j]) {
+            next[id[k]] = id[j];
+            break;
+          }
         }
       }
     }
   }
-  auto inside = [&](int x, int y) {
-    return x >= 0 && y >= 0 && x < nx && y < ny && in[static_cast<std::size_t>(y) * nx + x];
-  };
-  // Crack edges between inside and outside pixels, directed with the inside on
-  // the left: they close into counter-clockwise outer loops.
-  const int vx = nx + 1;
-  auto vid = [&](int x, int y) { return y * vx + x; };
-  std::vector<std::vector<int>> out_edges(static_cast<std::size_t>(vx) * (ny + 1));
-  for (int y = 0; y < ny; ++y) {
-    for (int x = 0; x < nx; ++x) {
-      if (!inside(x, y)) continue;
-      if (!inside(x, y - 1)) out_edges[vid(x, y)].push_back(vid(x + 1, y));
-      if (!inside(x + 1, y)) out_edges[vid(x + 1, y)].push_back(vid(x + 1, y + 1));
-      if (!inside(x, y + 1)) out_edges[vid(x + 1, y + 1)].push_back(vid(x, y + 1));
-      if (!inside(x - 1, y)) out_edges[vid(x, y + 1)].push_back(vid(x, y));
-    }
-  }
   std::vector<Vec2> best;
   double best_area = 0;
-  for (int start = 0; start < static_cast<int>(out_edges.size()); ++start) {
-    while (!out_edges[start].empty()) {
-      std::vector<Vec2> loop;
-      int v = start;
-      do {
-        loop.emplace_back(origin.x() + (v % vx) * pixel, origin.y() + (v / vx) * pixel);
-        auto& e = out_edges[v];
-        if (e.empty()) break;  // cannot happen for crack loops; guards the walk
-        const int next = e.back();
-        e.pop_back();
-        v = next;
-      } while (v != start);
-      const double a = signed_area(loop);
-      if (a > best_area) {
-        best_area = a;
-        best = std::move(loop);
-      }
+  for (std::size_t start = 0; start < edges; ++start) {
+    if (next[start] < 0) continue;
+    std::vector<Vec2> loop;
+    int e = static_cast<int>(start);
+    while (e >= 0 && next[e] >= 0) {
+      loop.push_back(point[e]);
+      const int n = next[e];
+      next[e] = -1;  // visited
+      e = n;
+    }
+    const double a = signed_area(loop);
+    if (a > best_area) {
+      best_area = a;
+      best = std::move(loop);
     }
   }
   return best;

@@ -47,10 +47,13 @@ ShapeMetrics shape_metrics(const TriMesh& mesh);
 std::vector<Vec2> convex_outline(std::span<const Vec2> points);
 
 // Outer boundary of the union of the triangles (points[f[0]], points[f[1]],
-// points[f[2]]), rasterised on a square grid of `resolution` pixels across the
-// larger side: the silhouette of a possibly non-convex solid. Counter-clockwise.
+// points[f[2]]): the silhouette of a possibly non-convex solid. Counter-clockwise.
+// The triangles are rasterised with 4 x 4 samples per pixel, `resolution`
+// pixels across the larger side, and the outline is traced where the coverage
+// is 1/2 (marching squares, crossings interpolated): within a fifth of a
+// pixel of the true boundary, with its length, not a pixel staircase.
 std::vector<Vec2> silhouette_outline(std::span<const Vec2> points, std::span<const Face> faces,
-                                     int resolution = 256);
+                                     int resolution = 512);
 
 // Radius of the largest circle inside a closed outline (any simple polygon);
 // its centre goes to *centre when given.
