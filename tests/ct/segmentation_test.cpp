@@ -16,18 +16,21 @@ namespace {
 using testing::match_grains;
 using testing::standard_scene;
 
-// Roundness tolerance per kind. Sub-angular grains (corner radius about 4 voxels
-// at 36 voxels across) come out rounder by up to 0.07 (measured, docs/ct.md): the
-// scanner blur (1 voxel) and the denoising blur (0.7 voxel) blunt their corners.
-// That is a limit of the resolution, stated here rather than hidden in a global tolerance.
+// Roundness tolerance per kind at 36 voxels across. Sub-angular grains come out
+// rounder by up to 0.07 here and 0.02-0.10 over six scans (docs/ct.md, "Known
+// limits"): their shallow corners' radii move by up to a hundred times a
+// sub-voxel apex error. That is a limit of the resolution (at 72 voxels they
+// are within 0.05: the next test), stated here rather than hidden in a global
+// tolerance.
 double roundness_tolerance(const std::string& kind) { return kind == "sub-angular" ? 0.08 : 0.05; }
 
 // Segments `scene`, checks every grain against its source and prints the figures.
-void check_scene(const SyntheticScene& scene, bool verbose, bool assert_roundness) {
+void check_scene(const SyntheticScene& scene, bool verbose, bool assert_roundness,
+                 double (*tolerance)(const std::string&) = roundness_tolerance, SegmentOptions options = {}) {
   std::map<std::string, std::pair<double, double>> by_kind;  // kind -> (sum of |error|, max |error|)
   std::map<std::string, int> count;
   Progress quiet(false);
-  const Segmentation seg = segment_grey(scene.volume, SegmentOptions{}, quiet);
+  const Segmentation seg = segment_grey(scene.volume, options, quiet);
   ASSERT_EQ(seg.grains.size(), scene.grains.size()) << "a grain was merged, split or lost";
   const std::vector<int> match = match_grains(scene, seg);
   EXPECT_EQ(std::set<int>(match.begin(), match.end()).size(), match.size()) << "two true grains matched one";
@@ -46,7 +49,7 @@ void check_scene(const SyntheticScene& scene, bool verbose, bool assert_roundnes
     EXPECT_LT(std::abs(dv), 0.03) << "grain " << g + 1 << " (" << t.kind << ")";
     EXPECT_LT(dc, 1.0) << "grain " << g + 1 << " (" << t.kind << ")";
     if (assert_roundness) {
-      EXPECT_LT(std::abs(r_seg - r_true), roundness_tolerance(t.kind)) << "grain " << g + 1 << " (" << t.kind << ")";
+      EXPECT_LT(std::abs(r_seg - r_true), tolerance(t.kind)) << "grain " << g + 1 << " (" << t.kind << ")";
     }
     by_kind[t.kind].first += std::abs(r_seg - r_true);
     by_kind[t.kind].second = std::max(by_kind[t.kind].second, std::abs(r_seg - r_true));
@@ -68,6 +71,24 @@ void check_scene(const SyntheticScene& scene, bool verbose, bool assert_roundnes
 TEST(CtSegmentation, FindsEveryGrainWithItsVolumeCentroidAndRoundness) {
   EXPECT_EQ(standard_scene().touching.size(), 2u);
   check_scene(standard_scene(), true, true);
+}
+
+// The standard scan's grains at twice the resolution (voxel 12.5 um, 72
+// voxels across, 288^3; --h doubled with it, as docs/ct.md advises): the
+// sub-angular grains' roundness is within 0.05 too (all ten of six such scans,
+// docs/ct.md). The concave grains keep 0.08: their dents' rims are knife-sharp
+// creases in the source meshes, which a scan reads as radii of the blur's
+// size (six of ten beyond 0.05 over those scans). About 20 s and 0.9 GB.
+double roundness_tolerance_72_voxels(const std::string& kind) { return kind == "concave" ? 0.08 : 0.05; }
+
+TEST(CtSegmentation, AtSeventyTwoVoxelsAcrossSubAngularRoundnessIsWithin005) {
+  SyntheticSpec spec;
+  spec.voxel_size = 12.5e-6;
+  spec.size = 288;
+  spec.grain_size = 72;
+  SegmentOptions options;
+  options.h = 4;
+  check_scene(make_synthetic_scene(spec), true, true, roundness_tolerance_72_voxels, options);
 }
 
 // The larger scan of docs/ct.md (256^3, 60 grains of 30 voxels, 10 touching
