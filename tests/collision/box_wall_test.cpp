@@ -54,13 +54,7 @@ TEST(BoxWall, AGrainOverOneFaceMeetsThatFacesPlaneAsBruteForceAndGjkSay) {
     local[i] = rng.uniform(-1, 1) * (wall.half[i] - r);
     local[j] = rng.uniform(-1, 1) * (wall.half[j] - r);
     local[k] = s * (wall.half[k] + rng.uniform(-0.3, 1.1) * r);
-    PosedShape grain;
-    grain.kind = ShapeKind::Polytope;
-    grain.hull = &hull.poly;
-    grain.rot = &rot;
-    grain.q = &qb;
-    grain.pos = wall.pos + wall.rot * local;
-    grain.scale = scale;
+    const PosedShape grain = grainlab::testing::posed_polytope(hull.poly, rot, qb, wall.pos + wall.rot * local, scale);
 
     PairCache cache{grain.pos - wall.pos, 0, 0, false, {}};
     SubContact out[kMaxSubContacts];
@@ -101,14 +95,10 @@ TEST(BoxWall, AGrainOverAnEdgeTakesGjk) {
   const Wall wall;
   const Mat3 rot = Mat3::Identity();
   const Quat qb = Quat::Identity();
-  PosedShape grain;
-  grain.kind = ShapeKind::Polytope;
-  grain.hull = &hull.poly;
-  grain.rot = &rot;
-  grain.q = &qb;
-  grain.scale = 0.5;
   // Centre just over the top face (axis 2), across its edge at x = +h_x.
-  grain.pos = wall.pos + wall.rot * Vec3(wall.half.x(), 0, wall.half.z() + 0.1 * grain.scale);
+  const double scale = 0.5;
+  const PosedShape grain = grainlab::testing::posed_polytope(
+      hull.poly, rot, qb, wall.pos + wall.rot * Vec3(wall.half.x(), 0, wall.half.z() + 0.1 * scale), scale);
   PairCache cache{grain.pos - wall.pos, 0, 0, false, {}};
   SubContact out[kMaxSubContacts];
   ASSERT_EQ(collide_shapes(wall.posed(), grain, cache, out), 1);

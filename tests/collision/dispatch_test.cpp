@@ -26,13 +26,7 @@ TEST(Dispatch, FlippedPairIsTheDirectRoutineMirrored) {
   const grainlab::testing::TestHull hull = grainlab::testing::random_blob_hull(rng, 60);
   const Mat3 rot = Quat(Eigen::AngleAxisd(0.3, Vec3(1, 2, 3).normalized())).toRotationMatrix();
   const Quat q = Quat::Identity();
-  PosedShape poly;
-  poly.kind = ShapeKind::Polytope;
-  poly.hull = &hull.poly;
-  poly.rot = &rot;
-  poly.q = &q;
-  poly.pos = Vec3(0.1, -0.2, 0.05);
-  poly.scale = 1.3;
+  const PosedShape poly = grainlab::testing::posed_polytope(hull.poly, rot, q, Vec3(0.1, -0.2, 0.05), 1.3);
   PosedShape sphere;
   sphere.kind = ShapeKind::Sphere;
   sphere.radius = 0.4;

@@ -2,6 +2,7 @@
 // without qhull by a small incremental hull, and brute-force references.
 #pragma once
 
+#include "collision/posed_shape.h"
 #include "collision/shapes.h"
 #include "core/rng.h"
 
@@ -184,6 +185,19 @@ inline TestHull box_hull(const Vec3& half) {
     }
   h.poly = ConvexPolytope(pts, offsets, adj);
   return h;
+}
+
+// A hull placed for the shape-pair table (the rotation is kept by reference).
+inline PosedShape posed_polytope(const ConvexPolytope& hull, const Mat3& rot, const Quat& q, const Vec3& pos,
+                                 double scale) {
+  PosedShape p;
+  p.kind = ShapeKind::Polytope;
+  p.hull = &hull;
+  p.rot = &rot;
+  p.q = &q;
+  p.pos = pos;
+  p.scale = scale;
+  return p;
 }
 
 // World-space vertices of a placed polytope.
