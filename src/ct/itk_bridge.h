@@ -54,12 +54,30 @@ void write_labels(const std::string& path, const Grid& grid, const std::vector<s
 using ProgressFn = std::function<void(double)>;
 
 // Splits a binary mask (1 = solid) into grains: Euclidean distance map inside
-// the solid (in voxels), h-maxima of depth `h` (voxels) as markers, marker
+// the solid (in voxels), h-maxima of depth h (voxels) as markers, marker
 // watershed of the negated distance, restricted to the solid. Every
-// 26-connected solid component gets at least one marker. Returns labels 1..n
-// (0 = pore), in no particular order.
-std::vector<std::uint32_t> distance_watershed(const std::vector<std::uint8_t>& mask,
-                                              const std::array<std::int64_t, 3>& size, double h,
-                                              const ProgressFn& progress);
+// 26-connected solid component gets at least one marker.
+//
+// h > 0 is used as given. h = 0 chooses it from the scan: markers at depth
+// kMinDepth first, whose tops are the grains' inscribed radii (and a few
+// spurious lobes'); their median r_typ sets h = max(kMinDepth,
+// kDepthPerRadius r_typ). The spurious hills (a grain's facets and lobes)
+// grow with the voxels per grain, and so does the rise of a grain above its
+// contact necks, so one fixed depth cannot serve every scan: on six
+// synthetic scans per size (docs/ct.md, step 3), h = 2 merged touching grains
+// in 7 of 12 scans at 14-18 voxels across and split one at 72; a fifth of
+// r_typ found every grain in all 24 scans at 14, 18, 36 and 72 voxels, the
+// working depths spanning about 0.13-0.28 r_typ.
+inline constexpr double kMinDepth = 1.0;
+inline constexpr double kDepthPerRadius = 0.2;
+
+struct Watershed {
+  std::vector<std::uint32_t> labels;  // 1..n (0 = pore), in no particular order
+  double h = 0;                       // the depth used (voxels)
+  double typical_radius = 0;          // r_typ (voxels) when h was chosen from the scan, else 0
+};
+
+Watershed distance_watershed(const std::vector<std::uint8_t>& mask, const std::array<std::int64_t, 3>& size, double h,
+                             const ProgressFn& progress);
 
 }  // namespace grainlab::ct::itk_bridge

@@ -51,9 +51,51 @@ void watch(itk::Object* filter, const ProgressFn& progress, double from, double 
   });
 }
 
+// Labels 1..count on the regional maxima of the h-maxima reconstruction of
+// `height` (one per hill rising more than h above its saddle), 0 elsewhere.
+struct Markers {
+  LabelImage::Pointer image;
+  std::uint32_t count = 0;
+};
+Markers markers_at(const FloatImage::Pointer& height, double h, const ProgressFn& progress, double from, double to) {
+  auto hmax = itk::HMaximaImageFilter<FloatImage, FloatImage>::New();
+  hmax->SetInput(height);
+  hmax->SetHeight(static_cast<float>(h));
+  hmax->SetFullyConnected(true);
+  watch(hmax, progress, from, to);
+  auto peaks = itk::RegionalMaximaImageFilter<FloatImage, MaskImage>::New();
+  peaks->SetInput(hmax->GetOutput());
+  peaks->SetFullyConnected(true);
+  peaks->SetForegroundValue(1);
+  peaks->SetBackgroundValue(0);
+  peaks->SetFlatIsMaxima(false);
+  auto label = itk::ConnectedComponentImageFilter<MaskImage, LabelImage>::New();
+  label->SetInput(peaks->GetOutput());
+  label->SetFullyConnected(true);
+  label->Update();
+  Markers m{label->GetOutput(), static_cast<std::uint32_t>(label->GetObjectCount())};
+  m.image->DisconnectPipeline();
+  return m;
+}
+
+// The median over markers of the highest `height` on each (a hill's top:
+// inscribed radius + 1 voxel, see below), minus the 1.
+double median_top(const Markers& m, const FloatImage::Pointer& height) {
+  std::vector<float> top(m.count + 1, 0.0f);
+  const std::uint32_t* mk = m.image->GetBufferPointer();
+  const float* d = height->GetBufferPointer();
+  const std::size_t n = height->GetBufferedRegion().GetNumberOfPixels();
+  for (std::size_t i = 0; i < n; ++i)
+    if (mk[i]) top[mk[i]] = std::max(top[mk[i]], d[i]);
+  top.erase(top.begin());
+  if (top.empty()) return 0;
+  std::nth_element(top.begin(), top.begin() + top.size() / 2, top.end());
+  return std::max(0.0, top[top.size() / 2] - 1.0);
+}
+
 }  // namespace
 
-std::vector<std::uint32_t> distance_watershed(const std::vector<std::uint8_t>& mask,
+Watershed distance_watershed(const std::vector<std::uint8_t>& mask,
                                               const std::array<std::int64_t, 3>& size, double h,
                                               const ProgressFn& progress) {
   const std::size_t n = mask.size();
@@ -77,30 +119,21 @@ std::vector<std::uint32_t> distance_watershed(const std::vector<std::uint8_t>& m
       for (std::size_t i = 0; i < n; ++i) d[i] = mask[i] ? std::max(d[i], 0.0f) + 1.0f : 0.0f;
     }
 
-    // Markers: regional maxima of the h-maxima reconstruction, one label each.
-    LabelImage::Pointer markers;
-    std::uint32_t marker_count = 0;
-    {
-      auto hmax = itk::HMaximaImageFilter<FloatImage, FloatImage>::New();
-      hmax->SetInput(height);
-      hmax->SetHeight(static_cast<float>(h));
-      hmax->SetFullyConnected(true);
-      watch(hmax, progress, 0.25, 0.55);
-      auto peaks = itk::RegionalMaximaImageFilter<FloatImage, MaskImage>::New();
-      peaks->SetInput(hmax->GetOutput());
-      peaks->SetFullyConnected(true);
-      peaks->SetForegroundValue(1);
-      peaks->SetBackgroundValue(0);
-      peaks->SetFlatIsMaxima(false);
-      auto label = itk::ConnectedComponentImageFilter<MaskImage, LabelImage>::New();
-      label->SetInput(peaks->GetOutput());
-      label->SetFullyConnected(true);
-      label->Update();
-      markers = label->GetOutput();
-      markers->DisconnectPipeline();
-      marker_count = static_cast<std::uint32_t>(label->GetObjectCount());
+    // Markers: regional maxima of the h-maxima reconstruction, one label each
+    // (for h = 0, first at the smallest depth to measure the grains' radii).
+    Watershed result;
+    Markers markers;
+    if (h > 0) {
+      result.h = h;
+      markers = markers_at(height, h, progress, 0.25, 0.55);
+    } else {
+      markers = markers_at(height, kMinDepth, progress, 0.25, 0.4);
+      result.typical_radius = median_top(markers, height);
+      result.h = std::max(kMinDepth, kDepthPerRadius * result.typical_radius);
+      if (result.h > kMinDepth) markers = markers_at(height, result.h, progress, 0.4, 0.55);
     }
-    std::uint32_t* mk = markers->GetBufferPointer();
+    std::uint32_t marker_count = markers.count;
+    std::uint32_t* mk = markers.image->GetBufferPointer();
     for (std::size_t i = 0; i < n; ++i) {
       if (!mask[i]) mk[i] = 0;
     }
@@ -133,15 +166,15 @@ std::vector<std::uint32_t> distance_watershed(const std::vector<std::uint8_t>& m
     for (std::size_t i = 0; i < n; ++i) d[i] = -d[i];
     auto ws = itk::MorphologicalWatershedFromMarkersImageFilter<FloatImage, LabelImage>::New();
     ws->SetInput(height);
-    ws->SetMarkerImage(markers);
+    ws->SetMarkerImage(markers.image);
     ws->SetMarkWatershedLine(false);
     ws->SetFullyConnected(true);
     watch(ws, progress, 0.55, 1.0);
     ws->Update();
     const std::uint32_t* out = ws->GetOutput()->GetBufferPointer();
-    std::vector<std::uint32_t> labels(n);
-    for (std::size_t i = 0; i < n; ++i) labels[i] = mask[i] ? out[i] : 0;
-    return labels;
+    result.labels.resize(n);
+    for (std::size_t i = 0; i < n; ++i) result.labels[i] = mask[i] ? out[i] : 0;
+    return result;
   } catch (const itk::ExceptionObject& e) {
     throw RunError(fmt::format("the watershed failed inside ITK: {}", e.GetDescription()));
   } catch (const std::bad_alloc&) {

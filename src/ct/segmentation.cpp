@@ -20,7 +20,9 @@
 namespace grainlab::ct {
 
 void validate(const SegmentOptions& o) {
-  if (!(o.h > 0 && std::isfinite(o.h))) input_error("--h {} must be a positive depth in voxels (default 2)", o.h);
+  if (!(o.h >= 0 && std::isfinite(o.h))) {
+    input_error("--h {} must be 0 or more voxels (0, the default, chooses it from the grains' size)", o.h);
+  }
   if (o.min_voxels < 1) input_error("--min-voxels {} must be at least 1", o.min_voxels);
   if (o.meshing.faces < 20) input_error("--faces {} must be at least 20", o.meshing.faces);
   if (o.meshing.smooth_iterations < 0) input_error("--smooth {} must be 0 or more", o.meshing.smooth_iterations);
@@ -171,8 +173,11 @@ Segmentation segment_grey(const GreyVolume& grey, const SegmentOptions& options,
   progress.start("distance map and watershed");
   LabelVolume labels;
   labels.copy_grid(grey);
-  labels.values = itk_bridge::distance_watershed(mask.values, grey.size, options.h,
-                                                 [&](double f) { progress.report(f); });
+  itk_bridge::Watershed split =
+      itk_bridge::distance_watershed(mask.values, grey.size, options.h, [&](double f) { progress.report(f); });
+  labels.values = std::move(split.labels);
+  result.h = split.h;
+  result.typical_radius = split.typical_radius;
   mask.values = {};
   progress.finish();
 

@@ -2,7 +2,8 @@
 //
 //  1. threshold: solid where grey > T (Otsu's T unless given);
 //  2. clean: pores smaller than min_voxels enclosed by solid become solid;
-//  3. split: distance-transform watershed with h-maxima markers (depth h voxels);
+//  3. split: distance-transform watershed with h-maxima markers (depth h voxels,
+//     by default scaled with the grains' inscribed radius);
 //  4. tidy: regions smaller than min_voxels are dropped, the rest numbered 1..n;
 //  5. mesh: each grain's iso-surface, Taubin-smoothed, simplified to the face
 //     budget and checked;
@@ -23,7 +24,8 @@ namespace grainlab::ct {
 
 struct SegmentOptions {
   std::optional<float> threshold;  // grey level; absent: Otsu
-  double h = 2.0;                  // h-maxima depth (voxels): the smallest neck-to-centre rise that separates grains
+  double h = 0;                    // h-maxima depth (voxels): the smallest neck-to-centre rise that separates
+                                   // grains; 0: a fifth of the median inscribed radius (itk_bridge.h)
   std::int64_t min_voxels = 100;   // smaller regions are noise; smaller enclosed pores are filled
   MeshingOptions meshing;
 };
@@ -50,6 +52,8 @@ struct Segmentation {
   bool from_labels = false;
   float threshold = 0;              // grey level used (grey images)
   bool otsu = false;                // the threshold is Otsu's
+  double h = 0;                     // h-maxima depth used (voxels; grey images)
+  double typical_radius = 0;        // median inscribed radius (voxels) when h was chosen from it (h = 0)
   double pore_level = 0, solid_level = 0;  // class means
   double solid_fraction = 0;        // of the voxels, after cleaning
   std::int64_t filled_voxels = 0;   // pore voxels made solid (step 2)
