@@ -18,6 +18,7 @@
 //    grain, moved across the seam where two pieces meet; the force over the
 //    hull's (exact on that face). Two pieces each push with the full depth
 //    near the seam.
+#include "bench_args.h"
 #include "collision/dispatch.h"
 #include "core/rng.h"
 #include "core/timer.h"
@@ -134,6 +135,8 @@ struct SeamProbe {
 }  // namespace
 
 int main(int argc, char** argv) {
+  grainlab::bench::check_args(argc, argv, "[--faces F] [--seeds S] [--pairs P] [--repeat K]",
+                              {"--faces", "--seeds", "--pairs", "--repeat"});
   std::vector<int> faces_list{200, 2000};
   int seeds = 3, pairs = 40, repeat = 50;
   for (int i = 1; i + 1 < argc; i += 2) {

@@ -25,6 +25,7 @@
 // depth (gain 1, no spread: PD, e.g. edge across edge) or the soft depth of
 // the vertices inside (soft_depth.h). A contact appearing or vanishing
 // counts with u = 0 on the other side.
+#include "bench_args.h"
 #include "core/wait_policy.h"
 #include "lab/rest_criteria.h"
 #include "lab/settling_bed.h"
@@ -93,6 +94,8 @@ double total_energy(const World& w, const std::map<Key, Snapshot>& contacts) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  grainlab::bench::check_args(argc, argv, "[--grains N] [--hull-points P] [--seed S] [--steps K] [--spheres]",
+                              {"--grains", "--hull-points", "--seed", "--steps"}, {"--spheres"});
   grainlab::use_passive_wait_by_default(argv);
   SettlingBedSpec spec = frictionless_faceted_bed_spec();
   int steps = 2000;

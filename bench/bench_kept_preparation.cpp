@@ -11,6 +11,7 @@
 //      build/bench_kept_preparation bench/results/study_four_sands/configs/angular.toml
 //        bench/results/study_four_sands/angular/trial_friction_0.01000000.bin --steps 20
 // Prints steps/s per repeat (each from the same kept state) and their median.
+#include "bench_args.h"
 #include "core/bytes.h"
 #include "core/timer.h"
 #include "io/checkpoint.h"
@@ -34,6 +35,8 @@
 using namespace grainlab;
 
 int main(int argc, char** argv) {
+  grainlab::bench::check_args(argc, argv, "CONFIG KEPT_FILE [--steps N] [--threads T] [--repeat R]",
+                              {"--steps", "--threads", "--repeat"}, {}, 3);
   if (argc < 3) {
     fmt::print(stderr, "usage: {} CONFIG KEPT_FILE [--steps N] [--threads T] [--repeat R]\n", argv[0]);
     return 2;

@@ -8,6 +8,7 @@
 // Paths: bounding spheres apart (no narrowphase); apart along the last normal
 // by more than 1 % of the size (no GJK); touching; anything else (near but
 // apart, or a cold pair: GJK/EPA). Times are per call, one thread.
+#include "bench_args.h"
 #include "collision/dispatch.h"
 #include "core/timer.h"
 #include "core/wait_policy.h"
@@ -30,6 +31,8 @@ constexpr std::array<const char*, kPathCount> kPathNames = {
 }  // namespace
 
 int main(int argc, char** argv) {
+  grainlab::bench::check_args(argc, argv, "[--grains N] [--settle STEPS] [--repeat K]",
+                              {"--grains", "--settle", "--repeat"});
   grainlab::use_passive_wait_by_default(argv);
   int grains = 2000, settle = 6000, repeat = 20;
   for (int i = 1; i + 1 < argc; i += 2) {

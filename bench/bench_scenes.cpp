@@ -3,6 +3,7 @@
 // phase of the step, for 1 and 2 threads. Not a test: it prints figures.
 //
 //   build/bench_scenes [--grains N] [--settle STEPS] [--steps STEPS] [--only convex|spheres]
+#include "bench_args.h"
 #include "core/wait_policy.h"
 #include "core/parallel.h"
 #include "core/timer.h"
@@ -51,6 +52,8 @@ void run_scene(const char* label, SettlingBedSpec spec, int settle, int steps) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  grainlab::bench::check_args(argc, argv, "[--grains N] [--settle STEPS] [--steps STEPS] [--only convex|spheres]",
+                              {"--grains", "--settle", "--steps", "--only"});
   grainlab::use_passive_wait_by_default(argv);  // as grainlab runs (core/wait_policy.h)
   int grains = 2000, settle = 10000, steps = 200;
   std::string only;

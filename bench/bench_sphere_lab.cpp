@@ -10,6 +10,7 @@
 // times during the shear, wall times).
 //
 //   build/bench_sphere_lab [--strain S] [--threads N]   (default: 0.10; 1, 2, then 0 = automatic)
+#include "bench_args.h"
 #include "core/thread_tuner.h"
 #include "core/timer.h"
 #include "core/wait_policy.h"
@@ -96,6 +97,8 @@ void run(double strain, int threads) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  grainlab::bench::check_args(argc, argv, "[--strain S] [--threads N]   (default: 0.10; 1, 2, then 0 = automatic)",
+                              {"--strain", "--threads"});
   grainlab::use_passive_wait_by_default(argv);  // as grainlab runs (core/wait_policy.h)
   double strain = 0.10;
   std::vector<int> threads{1, 2, 0};
