@@ -78,9 +78,10 @@ TEST(CtSegmentation, FindsEveryGrainWithItsVolumeCentroidAndRoundness) {
 // voxels across, 288^3; the default --h, scaled with the grains): the
 // sub-angular grains' roundness is within 0.05 too (11 of 12 over six such
 // scans, the twelfth +0.064; docs/ct.md). The concave grains keep 0.08: 6 of
-// 12 come out beyond 0.05 over those scans, and rounding their dents' rims
-// in the generator did not help (docs/ct.md, Known limits). About 30 s and
-// 0.9 GB.
+// 12 come out beyond 0.05 over those scans, because the generator leaves
+// sub-voxel teeth along each dent's rim that no scan resolves (docs/ct.md,
+// Known limits: the fix is the generator's, not this tolerance's). About
+// 30 s and 0.9 GB.
 double roundness_tolerance_72_voxels(const std::string& kind) { return kind == "concave" ? 0.08 : 0.05; }
 
 TEST(CtSegmentation, AtSeventyTwoVoxelsAcrossSubAngularRoundnessIsWithin005) {
