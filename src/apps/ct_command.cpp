@@ -70,7 +70,7 @@ int run_segment(const SegmentArgs& a) {
                s.threshold, s.otsu ? "Otsu" : "--threshold", s.pore_level, s.solid_level, s.solid_fraction,
                s.filled_voxels, s.h,
                options.h == 0 ? fmt::format("a fifth of the median inscribed radius, {:.1f} voxels", s.typical_radius)
-                                    : std::string("--h"));
+                              : std::string("--h"));
   }
   ct::write_segmentation(s, a.out, a.force, a.format);
   int border = 0, over_budget = 0, pieces = 0;

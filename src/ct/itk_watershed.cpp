@@ -95,9 +95,8 @@ double median_top(const Markers& m, const FloatImage::Pointer& height) {
 
 }  // namespace
 
-Watershed distance_watershed(const std::vector<std::uint8_t>& mask,
-                                              const std::array<std::int64_t, 3>& size, double h,
-                                              const ProgressFn& progress) {
+Watershed distance_watershed(const std::vector<std::uint8_t>& mask, const std::array<std::int64_t, 3>& size, double h,
+                             const ProgressFn& progress) {
   const std::size_t n = mask.size();
   try {
     // Distance inside the solid (voxels), shifted so that every solid voxel is >= 1 and pores are 0.
