@@ -58,16 +58,16 @@ using ProgressFn = std::function<void(double)>;
 // watershed of the negated distance, restricted to the solid. Every
 // 26-connected solid component gets at least one marker.
 //
-// h > 0 is used as given. h = 0 chooses it from the scan: markers at depth
-// kMinDepth first, whose tops are the grains' inscribed radii (and a few
-// spurious lobes'); their median r_typ sets h = max(kMinDepth,
-// kDepthPerRadius r_typ). The spurious hills (a grain's facets and lobes)
-// grow with the voxels per grain, and so does the rise of a grain above its
-// contact necks, so one fixed depth cannot serve every scan: on six
-// synthetic scans per size (docs/ct.md, step 3), h = 2 merged touching grains
-// in 7 of 12 scans at 14-18 voxels across and split one at 72; a fifth of
-// r_typ found every grain in all 24 scans at 14, 18, 36 and 72 voxels, the
-// working depths spanning about 0.13-0.28 r_typ.
+// h > 0 is used as given. h = 0 chooses it from the scan: r_typ, the median
+// over the solid components (a grain, or grains touching) of the largest
+// inscribed radius (the distance map's top, specks of a voxel left out),
+// sets h = max(kMinDepth, kDepthPerRadius r_typ). The spurious hills (a
+// grain's facets and lobes) grow with the voxels per grain, and so does the
+// rise of a grain above its contact necks, so one fixed depth cannot serve
+// every scan: on six synthetic scans per size (docs/ct.md, step 3), h = 2
+// merged touching grains in 7 of 12 scans at 14-18 voxels across and split
+// one at 72; a fifth of r_typ found every grain in all 24 scans at 14, 18,
+// 36 and 72 voxels, the working depths spanning about 0.12-0.28 r_typ.
 inline constexpr double kMinDepth = 1.0;
 inline constexpr double kDepthPerRadius = 0.2;
 

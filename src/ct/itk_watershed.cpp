@@ -78,19 +78,45 @@ Markers markers_at(const FloatImage::Pointer& height, double h, const ProgressFn
   return m;
 }
 
-// The median over markers of the highest `height` on each (a hill's top:
-// inscribed radius + 1 voxel, see below), minus the 1.
-double median_top(const Markers& m, const FloatImage::Pointer& height) {
-  std::vector<float> top(m.count + 1, 0.0f);
-  const std::uint32_t* mk = m.image->GetBufferPointer();
+// The 26-connected solid components of `mask`, and for each its highest
+// voxel in `height` (index; [0] unused).
+struct Components {
+  LabelImage::Pointer image;
+  std::vector<std::size_t> top;
+};
+Components solid_components(const std::vector<std::uint8_t>& mask, const std::array<std::int64_t, 3>& size,
+                            const FloatImage::Pointer& height) {
+  auto m = make_image<MaskImage>(size);
+  std::copy(mask.begin(), mask.end(), m->GetBufferPointer());
+  auto comps = itk::ConnectedComponentImageFilter<MaskImage, LabelImage>::New();
+  comps->SetInput(m);
+  comps->SetFullyConnected(true);
+  comps->Update();
+  Components result{comps->GetOutput(), {}};
+  result.image->DisconnectPipeline();
+  const std::size_t n = mask.size();
+  result.top.assign(comps->GetObjectCount() + 1, n);
+  const std::uint32_t* c = result.image->GetBufferPointer();
   const float* d = height->GetBufferPointer();
-  const std::size_t n = height->GetBufferedRegion().GetNumberOfPixels();
-  for (std::size_t i = 0; i < n; ++i)
-    if (mk[i]) top[mk[i]] = std::max(top[mk[i]], d[i]);
-  top.erase(top.begin());
-  if (top.empty()) return 0;
-  std::nth_element(top.begin(), top.begin() + top.size() / 2, top.end());
-  return std::max(0.0, top[top.size() / 2] - 1.0);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (c[i] && (result.top[c[i]] == n || d[i] > d[result.top[c[i]]])) result.top[c[i]] = i;
+  }
+  return result;
+}
+
+// The median inscribed radius of the solid components whose radius exceeds
+// a voxel (noise specks left out): each one's highest `height` (radius + 1
+// voxel, see below) minus the 1. A touching pair is one component and gives
+// its larger grain's radius.
+double median_radius(const Components& comps, const FloatImage::Pointer& height) {
+  const float* d = height->GetBufferPointer();
+  std::vector<float> radius;
+  for (std::size_t k = 1; k < comps.top.size(); ++k) {
+    if (d[comps.top[k]] > 2.0f) radius.push_back(d[comps.top[k]] - 1.0f);
+  }
+  if (radius.empty()) return 0;
+  std::nth_element(radius.begin(), radius.begin() + radius.size() / 2, radius.end());
+  return radius[radius.size() / 2];
 }
 
 }  // namespace
@@ -118,19 +144,16 @@ Watershed distance_watershed(const std::vector<std::uint8_t>& mask, const std::a
       for (std::size_t i = 0; i < n; ++i) d[i] = mask[i] ? std::max(d[i], 0.0f) + 1.0f : 0.0f;
     }
 
-    // Markers: regional maxima of the h-maxima reconstruction, one label each
-    // (for h = 0, first at the smallest depth to measure the grains' radii).
+    // h = 0: from the grains' size.
     Watershed result;
-    Markers markers;
-    if (h > 0) {
-      result.h = h;
-      markers = markers_at(height, h, progress, 0.25, 0.55);
-    } else {
-      markers = markers_at(height, kMinDepth, progress, 0.25, 0.4);
-      result.typical_radius = median_top(markers, height);
+    result.h = h;
+    if (h == 0) {
+      result.typical_radius = median_radius(solid_components(mask, size, height), height);
       result.h = std::max(kMinDepth, kDepthPerRadius * result.typical_radius);
-      if (result.h > kMinDepth) markers = markers_at(height, result.h, progress, 0.4, 0.55);
     }
+
+    // Markers: regional maxima of the h-maxima reconstruction, one label each.
+    Markers markers = markers_at(height, result.h, progress, 0.25, 0.55);
     std::uint32_t marker_count = markers.count;
     std::uint32_t* mk = markers.image->GetBufferPointer();
     for (std::size_t i = 0; i < n; ++i) {
@@ -139,24 +162,14 @@ Watershed distance_watershed(const std::vector<std::uint8_t>& mask, const std::a
 
     // A solid component without a marker (lower than h everywhere) gets one at its highest voxel.
     {
-      auto m = make_image<MaskImage>(size);
-      std::copy(mask.begin(), mask.end(), m->GetBufferPointer());
-      auto comps = itk::ConnectedComponentImageFilter<MaskImage, LabelImage>::New();
-      comps->SetInput(m);
-      comps->SetFullyConnected(true);
-      comps->Update();
-      const std::uint32_t* c = comps->GetOutput()->GetBufferPointer();
-      const std::size_t count = comps->GetObjectCount();
-      std::vector<char> marked(count + 1, 0);
-      std::vector<std::size_t> top(count + 1, n);
-      const float* d = height->GetBufferPointer();
+      const Components comps = solid_components(mask, size, height);
+      const std::uint32_t* c = comps.image->GetBufferPointer();
+      std::vector<char> marked(comps.top.size(), 0);
       for (std::size_t i = 0; i < n; ++i) {
-        if (!c[i]) continue;
-        if (mk[i]) marked[c[i]] = 1;
-        if (top[c[i]] == n || d[i] > d[top[c[i]]]) top[c[i]] = i;
+        if (c[i] && mk[i]) marked[c[i]] = 1;
       }
-      for (std::size_t k = 1; k <= count; ++k) {
-        if (!marked[k]) mk[top[k]] = ++marker_count;
+      for (std::size_t k = 1; k < comps.top.size(); ++k) {
+        if (!marked[k]) mk[comps.top[k]] = ++marker_count;
       }
     }
 

@@ -96,7 +96,7 @@ TEST(CtSegmentation, AtSeventyTwoVoxelsAcrossSubAngularRoundnessIsWithin005) {
 // small grains (14 voxels across) that a fixed depth of 2 voxels merges into
 // one (a touching pair's neck is within 2 voxels of the smaller grain's
 // inscribed radius here) come out one by one: their median inscribed radius
-// is about 3.6 voxels, a fifth of it less than the least depth, 1 voxel.
+// is about 4 voxels, a fifth of it less than the least depth, 1 voxel.
 // (At 72 voxels across the default is about 5 voxels, the test above.)
 TEST(CtSegmentation, TheDefaultDepthScalesWithTheGrainsAndSplitsSmallTouchingGrains) {
   SyntheticSpec spec;
