@@ -106,10 +106,6 @@ int main(int argc, char** argv) {
     else if (value && !std::strcmp(argv[i], "--hull-points")) spec.hull_points = std::stoi(argv[++i]);
     else if (value && !std::strcmp(argv[i], "--seed")) spec.seed = std::stoull(argv[++i]);
     else if (value && !std::strcmp(argv[i], "--steps")) steps = std::stoi(argv[++i]);
-    else {
-      fmt::print(stderr, "unknown or incomplete option '{}'; options: --grains N --hull-points P --seed S --steps K --spheres\n", argv[i]);
-      return 2;
-    }
   }
   SettlingBed bed = make_settling_bed(spec);
   World& w = bed.world;

@@ -88,10 +88,6 @@ int main(int argc, char** argv) {
     if (!std::strcmp(argv[i], "--threads") && value) threads = std::stoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--steps") && value) steps = std::stoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--small") && value) small = std::stod(argv[++i]);
-    else {
-      fmt::print(stderr, "usage: bench_paper_size [--threads N] [--steps K] [--small MM]\n");
-      return 2;
-    }
   }
   threads = resolve_threads(threads);
 

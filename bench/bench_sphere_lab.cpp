@@ -107,9 +107,6 @@ int main(int argc, char** argv) {
       strain = std::stod(argv[++i]);
     } else if (!std::strcmp(argv[i], "--threads") && i + 1 < argc) {
       threads = {std::stoi(argv[++i])};
-    } else {
-      fmt::print(stderr, "usage: bench_sphere_lab [--strain S] [--threads N]\n");
-      return 2;
     }
   }
   for (const int n : threads) run(strain, n);

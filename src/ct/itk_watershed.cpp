@@ -144,7 +144,10 @@ Watershed distance_watershed(const std::vector<std::uint8_t>& mask, const std::a
       for (std::size_t i = 0; i < n; ++i) d[i] = mask[i] ? std::max(d[i], 0.0f) + 1.0f : 0.0f;
     }
 
-    // h = 0: from the grains' size.
+    // h = 0: from the grains' size. The components are labelled again below,
+    // after the markers: kept alive through h-maxima instead, their image
+    // raised the peak on a 288^3 scan from 873 to 966 MB (beyond
+    // kBytesPerVoxel), for 0.7 s saved.
     Watershed result;
     result.h = h;
     if (h == 0) {
