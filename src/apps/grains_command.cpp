@@ -204,8 +204,9 @@ Command add_grains_command(CLI::App& app) {
       ->check(CLI::Range(0.0, 1.0));
   gen->add_option("--flatness", g->flatness, "mean S/I, (0, 1] (default: the preset's)")->check(CLI::Range(0.0, 1.0));
   gen->add_option("--convexity", g->convexity,
-                  fmt::format("volume / convex hull volume, [{}, 1]: below 1 each grain gets one smooth dent (60 deg "
-                              "across, in a random direction) deep enough for it. A run collides such grains as their "
+                  fmt::format("volume / convex hull volume, [{}, 1]: below 1 each grain gets two smooth craters "
+                              "(rims 130 deg across seen from its centre, in random directions on opposite sides) "
+                              "pressed in deep enough for it. A run collides such grains as their "
                               "convex pieces (grains.representation = \"auto\" below convexity 0.98; \"hull\" "
                               "collides the convex hull instead)",
                               kMinConvexity))

@@ -27,23 +27,30 @@
 //  5. The mesh is moved to its centroid and rotated into its principal frame.
 // R = 1 skips the core: the grain is a sphere (or an ellipsoid when E, F < 1).
 //  6. Dents (convexity C < 1 only; no random draw otherwise, so convex grains
-//     are the same bits as before). Two directions u1, u2 on different sides
-//     are drawn (u2 flipped if u1.u2 > 0). A ball of radius rho = 0.5 (the
-//     intermediate dimension is 1 here) comes in along each, its centre at
-//     (h_k + rho - depth h_k) u_k with h_k the grain's support along u_k, and
-//     every vertex inside it moves towards the centroid onto the ball's
-//     surface: along the ray s d (d = v / |v|) the ball begins at
-//       s1 = d.c - sqrt((d.c)^2 - |c|^2 + rho^2),
-//     and v <- s1 d when 0 < s1 < |v|. The convex grain is star-shaped about
-//     its centroid and no vertex changes direction, so the bitten surface
-//     stays closed and free of self-intersection (the centroid stays outside
-//     the balls: depth <= 0.8). Convexity V / V_hull falls as the depth grows:
-//     it is bisected until it is C within 1e-4, on the mesh subdivided to
-//     edges of at most 0.03 (a rounded hull's flat faces are single large
-//     triangles, which a dent would cut into fans); the result is simplified
-//     back to the face budget and the target corrected once for the convexity
-//     the simplification moved. One such dent bottoms out near C = 0.865, two
-//     near 0.755: C below kMinConvexity = 0.8 is refused.
+//     are the same bits as before). Two directions u1, u2 are drawn on
+//     opposite sides, at least 120 degrees apart (u2 flipped when u1.u2 > 0,
+//     drawn again while u1.u2 > -1/2). Each presses a crater into the grain:
+//     a point v of the surface, at angle theta = acos(d.u) from u (d = v/|v|),
+//     moves towards the centroid to
+//       v <- (1 - D w(x)) v,   x = clamp((theta0 - theta) / delta, 0, 1),
+//       w(x) = x^3 (6 x^2 - 15 x + 10)   (smootherstep: w, w', w'' vanish at
+//                                          x = 0 and w', w'' at x = 1),
+//     the two factors multiplied where craters meet. The crater's rim is at
+//     theta0 = 1.15 rad, its wall delta = 0.25 rad wide, and its floor at
+//     (1 - D) of the grain's radius there. No vertex changes direction and
+//     every scale factor is positive, so the surface stays closed and
+//     star-shaped about the centroid, free of self-intersection; the radius
+//     is C2 in the direction, so rim and foot of the wall are round, not a
+//     crease. (The first build bit balls into the grain along rays: where a
+//     grain reached past a ball's silhouette, the bite was a radial cliff,
+//     cut along the mesh edges into sub-voxel teeth, which no scan resolves;
+//     docs/ct.md.) Convexity V / V_hull falls as D grows: D is bisected until
+//     it is C within 1e-4, on a fine mesh (refined_radially: the grain's
+//     vertices plus points every 0.03 or so, triangulated by the hull of their
+//     directions); the result is simplified back to the face budget and the
+//     target corrected for the convexity the simplification moved, keeping
+//     the closest of kDentAttempts. D = 0.95 (kDentDeepest) reaches C = 0.77-
+//     0.79 (spheres the most convex); C below kMinConvexity = 0.8 is refused.
 #include "grains/generator.h"
 
 #include "core/error.h"
@@ -58,6 +65,8 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <numbers>
+#include <optional>
 #include <utility>
 
 namespace grainlab {
@@ -118,82 +127,96 @@ TriMesh to_principal_frame(const TriMesh& mesh) {
   return out;
 }
 
-// Radius of the balls that bite the dents (step 6), grain intermediate dimension 1.
-constexpr double kBiteRadius = 0.5;
-// The mesh they bite: edges at most this long, or at most this many times the face budget.
+// A dent seen from the centroid (step 6): its rim's half-angle and the width of the wall, radians.
+constexpr double kDentHalfAngle = 1.15;
+constexpr double kDentWall = 0.25;
+// The mesh the dents are pressed into: its edges at most this long.
 constexpr double kDentMeshEdge = 0.03;
-constexpr std::size_t kDentMeshFaceFactor = 16;
+// Depth of the deepest dents: the floor at a twentieth of the grain's radius there.
+constexpr double kDentDeepest = 0.95;
+// Attempts at the convexity through the simplification, and the miss that ends them.
+constexpr int kDentAttempts = 4;
+constexpr double kDentTolerance = 5e-4;
+// Volume change allowed when it is simplified back to the face budget (the grain is rescaled and its
+// convexity corrected afterwards).
+constexpr double kDentSimplifyVolume = 0.03;
 
-// Each triangle split into four at its edges' midpoints (shared midpoints
-// shared), until no edge is longer than max_edge or the faces would pass
-// max_faces.
-TriMesh subdivided(TriMesh m, double max_edge, std::size_t max_faces) {
-  const auto longest = [](const TriMesh& t) {
-    double l = 0;
-    for (const Face& f : t.faces)
-      for (int k = 0; k < 3; ++k) l = std::max(l, (t.vertices[f[k]] - t.vertices[f[(k + 1) % 3]]).norm());
-    return l;
-  };
-  while (longest(m) > max_edge && 4 * m.faces.size() <= max_faces) {
-    std::map<std::pair<Index, Index>, Index> midpoint;
-    const auto mid = [&](Index a, Index b) {
-      const auto key = std::minmax(a, b);
-      auto [it, fresh] = midpoint.try_emplace({key.first, key.second}, static_cast<Index>(m.vertices.size()));
-      if (fresh) m.vertices.push_back(0.5 * (m.vertices[a] + m.vertices[b]));
-      return it->second;
-    };
-    std::vector<Face> faces;
-    faces.reserve(4 * m.faces.size());
-    for (const Face& f : m.faces) {
-      const Index ab = mid(f[0], f[1]), bc = mid(f[1], f[2]), ca = mid(f[2], f[0]);
-      faces.push_back({f[0], ab, ca});
-      faces.push_back({ab, f[1], bc});
-      faces.push_back({ca, bc, f[2]});
-      faces.push_back({ab, bc, ca});
-    }
-    m.faces = std::move(faces);
+// The convex grain (centroid at the origin) refined for the dents: its own
+// vertices plus points along the Fibonacci directions of rounded_hull_mesh's
+// sphere, each where its ray leaves the grain (the nearest of the face planes
+// it crosses), less those closer in direction to one of the grain's vertices
+// than half their spacing. The grain is star-shaped about its centroid, so
+// the hull of the points' directions triangulates them: a fine, regular mesh
+// of the same body, with edges of about max_edge where the grain reaches
+// farthest (at least `min_faces` faces), which keeps the grain's vertices for
+// the simplification to return to.
+TriMesh refined_radially(const TriMesh& convex, double max_edge, int min_faces) {
+  std::vector<std::pair<Vec3, double>> planes;  // n . x <= offset inside
+  for (const Face& f : convex.faces) {
+    const Vec3& a = convex.vertices[f[0]];
+    const Vec3 n = (convex.vertices[f[1]] - a).cross(convex.vertices[f[2]] - a);
+    if (n.squaredNorm() > 0) planes.emplace_back(n.normalized(), n.normalized().dot(a));
   }
+  double reach = 0;
+  for (const Vec3& v : convex.vertices) reach = std::max(reach, v.norm());
+  // N points on a sphere of radius `reach` are about sqrt(8 pi / (sqrt 3 N)) reach apart.
+  const double n_points = std::max(8 * std::numbers::pi / std::sqrt(3.0) * (reach / max_edge) * (reach / max_edge),
+                                   0.5 * min_faces);
+  const double spacing = std::sqrt(8 * std::numbers::pi / (std::sqrt(3.0) * n_points));  // radians
+  const std::vector<Vec3> centre = {Vec3::Zero()};
+  const TriMesh sphere = rounded_hull_mesh(centre, 1.0, static_cast<int>(2 * n_points));
+  std::vector<Vec3> points = convex.vertices, directions;
+  for (const Vec3& v : convex.vertices) directions.push_back(v.normalized());
+  const double too_close = std::cos(0.5 * spacing);
+  for (const Vec3& v : sphere.vertices) {
+    const Vec3 d = v.normalized();
+    if (std::any_of(directions.begin(), directions.begin() + static_cast<std::ptrdiff_t>(convex.vertices.size()),
+                    [&](const Vec3& e) { return e.dot(d) > too_close; }))
+      continue;
+    double t = std::numeric_limits<double>::infinity();
+    for (const auto& [n, offset] : planes)
+      if (n.dot(d) > 0) t = std::min(t, offset / n.dot(d));
+    points.push_back(t * d);
+    directions.push_back(d);
+  }
+  const ConvexHull hull = convex_hull(directions);
+  std::map<std::array<double, 3>, Index> index_of;
+  for (std::size_t i = 0; i < directions.size(); ++i)
+    index_of[{directions[i].x(), directions[i].y(), directions[i].z()}] = static_cast<Index>(i);
+  TriMesh m;
+  for (const Vec3& d : hull.vertices) m.vertices.push_back(points[index_of.at({d.x(), d.y(), d.z()})]);
+  m.faces = hull.faces;
   return m;
 }
 
-// Step 6 above: the grain (centroid at the origin, intermediate dimension
-// about 1) bitten by two balls of radius kBiteRadius, about `u1` and `u2`,
-// to the same depth, for convexity `target`.
-TriMesh dented(const TriMesh& convex, const Vec3& u1, const Vec3& u2, double target) {
+// Step 6 above: the grain (centroid at the origin) pressed in about `u1`
+// and `u2` to the same depth, for convexity `target`; nothing when even the
+// deepest dents leave it above the target (their convexity in *deepest).
+std::optional<TriMesh> dented(const TriMesh& convex, const Vec3& u1, const Vec3& u2, double target, double* deepest) {
   const std::array<Vec3, 2> dirs = {u1, u2};
-  std::array<double, 2> reach{};  // the grain's support along each direction
-  for (int k = 0; k < 2; ++k)
-    for (const Vec3& v : convex.vertices) reach[k] = std::max(reach[k], v.dot(dirs[k]));
-  const auto bitten = [&](double depth) {
+  const auto pressed = [&](double depth) {
     TriMesh m = convex;
-    for (int k = 0; k < 2; ++k) {
-      const Vec3 c = (reach[k] + kBiteRadius - depth * reach[k]) * dirs[k];
-      for (Vec3& v : m.vertices) {
-        // The ray s d (d = v / |v|) enters the ball at s1 = d.c - sqrt((d.c)^2 - |c|^2 + rho^2).
-        const double r = v.norm(), dc = v.dot(c) / r;
-        const double disc = dc * dc - c.squaredNorm() + kBiteRadius * kBiteRadius;
-        if (disc <= 0) continue;
-        const double s1 = dc - std::sqrt(disc);
-        if (s1 > 0 && s1 < r) v *= s1 / r;  // the centroid stays outside the ball: s1 > 0 on rays towards it
+    for (Vec3& v : m.vertices) {
+      const Vec3 d = v.normalized();
+      double scale = 1;
+      for (const Vec3& u : dirs) {
+        const double x = std::clamp((kDentHalfAngle - std::acos(std::clamp(d.dot(u), -1.0, 1.0))) / kDentWall, 0.0, 1.0);
+        scale *= 1 - depth * x * x * x * (x * (6 * x - 15) + 10);
       }
+      v *= scale;
     }
     return m;
   };
-  // depth is a fraction of the reach: from balls clear of the grain (-rho /
-  // reach and less) to balls whose surface stops short of the centroid by a
-  // fifth of the reach (0.8).
-  const double deepest = 0.8;
-  if (convexity(bitten(deepest)) > target)
-    input_error("grain convexity {} is out of reach of two dents (the deepest give {:.3f}): ask for at least {}",
-                target, convexity(bitten(deepest)), kMinConvexity);
-  double lo = -kBiteRadius / std::min(reach[0], reach[1]), hi = deepest;
+  *deepest = convexity(pressed(kDentDeepest));
+  if (*deepest > target) return std::nullopt;
+  double lo = 0, hi = kDentDeepest;
   while (hi - lo > 1e-7) {
     const double mid = 0.5 * (lo + hi);
-    const double c = convexity(bitten(mid));
-    if (std::abs(c - target) < 1e-4) return bitten(mid);
+    const double c = convexity(pressed(mid));
+    if (std::abs(c - target) < 1e-4) return pressed(mid);
     (c > target ? lo : hi) = mid;
   }
-  return bitten(0.5 * (lo + hi));
+  return pressed(0.5 * (lo + hi));
 }
 
 }  // namespace
@@ -361,17 +384,30 @@ TriMesh generate_grain(const GeneratorSpec& spec, Rng& rng) {
   TriMesh m = generate_convex_grain(spec, rng);
   if (spec.convexity >= 1) return m;
   const Vec3 u1 = rng.unit_vector();
-  Vec3 u2 = rng.unit_vector();
-  if (u2.dot(u1) > 0) u2 = -u2;  // the two dents on different sides
-  // Bitten on a fine mesh (a rounded hull's flat faces are single large
-  // triangles, which a dent would cut into fans), then simplified back to the
-  // face budget; the target is corrected once by the convexity the
-  // simplification moved.
-  const TriMesh fine = subdivided(m, kDentMeshEdge, kDentMeshFaceFactor * static_cast<std::size_t>(spec.faces));
-  double target = spec.convexity;
-  for (int attempt = 0; attempt < 2; ++attempt) {
-    m = simplify_mesh(dented(fine, u1, u2, target), spec.faces).mesh;
-    target = std::clamp(target + spec.convexity - convexity(m), 0.5, 1.0);
+  Vec3 u2 = -u1;
+  do {  // the two dents on opposite sides, at least 120 degrees apart
+    u2 = rng.unit_vector();
+    if (u2.dot(u1) > 0) u2 = -u2;
+  } while (u2.dot(u1) > -0.5);
+  // Pressed into a fine mesh, then simplified back to the face budget; the
+  // target corrected by the convexity the simplification moved, keeping the
+  // closest of a few attempts.
+  const TriMesh fine = refined_radially(m, kDentMeshEdge, 4 * spec.faces);
+  double target = spec.convexity, best_miss = std::numeric_limits<double>::infinity(), deepest = 1;
+  for (int attempt = 0; attempt < kDentAttempts && best_miss > kDentTolerance; ++attempt) {
+    const std::optional<TriMesh> pressed = dented(fine, u1, u2, target, &deepest);
+    if (!pressed && attempt == 0) {
+      input_error("grain convexity {} is out of reach of two dents (the deepest give {:.3f}): ask for at least {}",
+                  spec.convexity, deepest, kMinConvexity);
+    }
+    if (!pressed) break;  // a corrected target beyond reach: keep the closest so far
+    TriMesh trial = simplify_mesh(*pressed, spec.faces, kDentSimplifyVolume).mesh;
+    const double miss = convexity(trial) - spec.convexity;
+    if (std::abs(miss) < best_miss) {
+      best_miss = std::abs(miss);
+      m = std::move(trial);
+    }
+    target = std::clamp(target - miss, 0.5, 1.0);
   }
   m = to_principal_frame(m);
   const double s = 1.0 / principal_frame(m).extents[1];

@@ -49,7 +49,7 @@ const std::array kFields{
     GL_FIELD("grains", "d_min", grains.d_min, "m, smallest sieve size (0.707 mm: retained on sieve #25)"),
     GL_FIELD("grains", "d_max", grains.d_max, "m, largest sieve size (0.841 mm: passing sieve #20)"),
     GL_FIELD("grains", "convexity", grains.convexity,
-             "generated grains: volume / convex hull volume, 0.8-1 (< 1 bites two dents into each grain)"),
+             "generated grains: volume / convex hull volume, 0.8-1 (< 1 presses two dents into each grain)"),
     GL_FIELD("grains", "scan", grains.scan,
              "if not empty: a folder from `grainlab ct segment` (grains.csv and meshes): its grains are placed "
              "where they were scanned and consolidated, without deposition (preset and folder are ignored)"),

@@ -23,7 +23,7 @@ struct GrainsSpec {
                                        // the demo under 10 minutes on 2 cores)
   double d_min = 0.707e-3;             // m, sieve range (passing #20, retained on #25)
   double d_max = 0.841e-3;             // m
-  double convexity = 1.0;              // generated grains: volume / hull volume (< 1 bites dents; 0.8-1)
+  double convexity = 1.0;              // generated grains: volume / hull volume (< 1 presses dents in; 0.8-1)
   std::string scan;                    // if set: a segmented CT scan's folder (`grainlab ct segment`): its grains
                                        // are placed where they were scanned and consolidated (no deposition)
   std::string scan_border = "drop";    // grains of the scan touching the image border: "drop" | "keep"

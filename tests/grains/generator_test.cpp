@@ -170,7 +170,7 @@ TEST(Generator, RejectsImpossibleSpecs) {
   EXPECT_THROW(generate_grain(spec, rng), InputError);
 }
 
-TEST(Generator, ConvexityControlBitesTwoDentsToTheTarget) {
+TEST(Generator, ConvexityControlPressesTwoDentsToTheTarget) {
   // Convexity V / V_hull within 0.002 of the target (the generator bisects
   // to 1e-4; the metric recomputes the hull of the rescaled, rotated mesh),
   // a valid closed mesh, unit intermediate dimension as convex grains.
