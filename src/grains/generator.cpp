@@ -189,35 +189,53 @@ TriMesh refined_radially(const TriMesh& convex, double max_edge, int min_faces) 
   return m;
 }
 
-// Step 6 above: the grain (centroid at the origin) pressed in about `u1`
-// and `u2` to the same depth, for convexity `target`; nothing when even the
-// deepest dents leave it above the target (their convexity in *deepest).
-std::optional<TriMesh> dented(const TriMesh& convex, const Vec3& u1, const Vec3& u2, double target, double* deepest) {
-  const std::array<Vec3, 2> dirs = {u1, u2};
-  const auto pressed = [&](double depth) {
-    TriMesh m = convex;
-    for (Vec3& v : m.vertices) {
-      const Vec3 d = v.normalized();
-      double scale = 1;
-      for (const Vec3& u : dirs) {
-        const double x = std::clamp((kDentHalfAngle - std::acos(std::clamp(d.dot(u), -1.0, 1.0))) / kDentWall, 0.0, 1.0);
-        scale *= 1 - depth * x * x * x * (x * (6 * x - 15) + 10);
+// Step 6 above: two craters about u1 and u2 on a grain (centroid at the
+// origin). Each vertex's crater weights w(x) do not depend on the depth, so
+// they are computed once; the depth D is bisected for a convexity.
+class Craters {
+ public:
+  Craters(const TriMesh& grain, const Vec3& u1, const Vec3& u2) : grain_(grain), weights_(grain.vertices.size()) {
+    const std::array<Vec3, 2> dirs = {u1, u2};
+    for (std::size_t i = 0; i < grain.vertices.size(); ++i) {
+      const Vec3 d = grain.vertices[i].normalized();
+      for (int k = 0; k < 2; ++k) {
+        const double x =
+            std::clamp((kDentHalfAngle - std::acos(std::clamp(d.dot(dirs[k]), -1.0, 1.0))) / kDentWall, 0.0, 1.0);
+        weights_[i][k] = x * x * x * (x * (6 * x - 15) + 10);
       }
-      v *= scale;
     }
-    return m;
-  };
-  *deepest = convexity(pressed(kDentDeepest));
-  if (*deepest > target) return std::nullopt;
-  double lo = 0, hi = kDentDeepest;
-  while (hi - lo > 1e-7) {
-    const double mid = 0.5 * (lo + hi);
-    const double c = convexity(pressed(mid));
-    if (std::abs(c - target) < 1e-4) return pressed(mid);
-    (c > target ? lo : hi) = mid;
+    deepest_ = convexity(pressed(kDentDeepest));
   }
-  return pressed(0.5 * (lo + hi));
-}
+
+  // The convexity of the deepest craters (D = kDentDeepest).
+  double deepest() const { return deepest_; }
+
+  // The grain pressed in to depth D: v <- (1 - D w1)(1 - D w2) v.
+  TriMesh pressed(double depth) const {
+    TriMesh m = grain_;
+    for (std::size_t i = 0; i < m.vertices.size(); ++i)
+      m.vertices[i] *= (1 - depth * weights_[i][0]) * (1 - depth * weights_[i][1]);
+    return m;
+  }
+
+  // The grain at convexity `target` (within 1e-4); nothing when the deepest craters leave it above.
+  std::optional<TriMesh> at_convexity(double target) const {
+    if (deepest_ > target) return std::nullopt;
+    double lo = 0, hi = kDentDeepest;
+    while (hi - lo > 1e-7) {
+      const double mid = 0.5 * (lo + hi);
+      const double c = convexity(pressed(mid));
+      if (std::abs(c - target) < 1e-4) return pressed(mid);
+      (c > target ? lo : hi) = mid;
+    }
+    return pressed(0.5 * (lo + hi));
+  }
+
+ private:
+  const TriMesh& grain_;
+  std::vector<std::array<double, 2>> weights_;
+  double deepest_ = 1;
+};
 
 }  // namespace
 
@@ -393,13 +411,14 @@ TriMesh generate_grain(const GeneratorSpec& spec, Rng& rng) {
   // target corrected by the convexity the simplification moved, keeping the
   // closest of a few attempts.
   const TriMesh fine = refined_radially(m, kDentMeshEdge, 4 * spec.faces);
-  double target = spec.convexity, best_miss = std::numeric_limits<double>::infinity(), deepest = 1;
+  const Craters craters(fine, u1, u2);
+  if (craters.deepest() > spec.convexity) {
+    input_error("grain convexity {} is out of reach of two dents (the deepest give {:.3f}): ask for at least {}",
+                spec.convexity, craters.deepest(), kMinConvexity);
+  }
+  double target = spec.convexity, best_miss = std::numeric_limits<double>::infinity();
   for (int attempt = 0; attempt < kDentAttempts && best_miss > kDentTolerance; ++attempt) {
-    const std::optional<TriMesh> pressed = dented(fine, u1, u2, target, &deepest);
-    if (!pressed && attempt == 0) {
-      input_error("grain convexity {} is out of reach of two dents (the deepest give {:.3f}): ask for at least {}",
-                  spec.convexity, deepest, kMinConvexity);
-    }
+    const std::optional<TriMesh> pressed = craters.at_convexity(target);
     if (!pressed) break;  // a corrected target beyond reach: keep the closest so far
     TriMesh trial = simplify_mesh(*pressed, spec.faces, kDentSimplifyVolume).mesh;
     const double miss = convexity(trial) - spec.convexity;
