@@ -55,7 +55,8 @@ double peak_memory_gb() {
 }
 
 DirectShearSpec paper_spec(int threads) {
-  DirectShearSpec spec;  // sub-angular grains, 0.707-0.841 mm, 100 kPa
+  DirectShearSpec spec;  // 0.707-0.841 mm, 100 kPa
+  spec.grains.preset = "sub-angular";  // the paper's Griffin sand (the lab's default is rounded since 97c501d)
   spec.specimen.indices = "lab";  // Griffin's indices: the rate only, no own index measurement
   spec.specimen.deposition_friction = 0.12;  // the preparation the README's projections were timed with
   spec.grains.faces = 2000;
@@ -98,8 +99,9 @@ int main(int argc, char** argv) {
   paper.world().settings.threads = threads;
   const double build_s = build_clock.seconds();
   const double grains = static_cast<double>(paper.world().model.bodies.size());
-  fmt::print("paper-size specimen: {:.0f} x {:.0f} x {:.0f} mm, {:.0f} sub-angular grains of {} faces, {} thread{}\n",
-             1e3 * full.box.length, 1e3 * full.box.width, 1e3 * full.box.height, grains, full.grains.faces,
+  fmt::print("paper-size specimen: {:.0f} x {:.0f} x {:.0f} mm, {:.0f} {} grains of {} faces, {} thread{}\n",
+             1e3 * full.box.length, 1e3 * full.box.width, 1e3 * full.box.height, grains, full.grains.preset,
+             full.grains.faces,
              threads, threads > 1 ? "s" : "");
   fmt::print("  built in {:.1f} s; dt {:.3g} s, shear speed {:.3g} mm/s\n", build_s, paper.time_step(),
              1e3 * paper.shear_speed());
