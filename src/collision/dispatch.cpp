@@ -58,13 +58,8 @@ bool has_pair_routine(ShapeKind a, ShapeKind b) { return kTable[idx(a)][idx(b)].
 
 namespace {
 
-// The cache of the pair taken the other way round (b to a); the kept patch
-// moves along (it is kept in the orientation the routine sees).
-PairCache flipped(PairCache& c) {
-  PairCache f{-c.dir, c.hint_b, c.hint_a, c.warm, c.simplex.swapped(), {}};
-  f.patch = std::move(c.patch);
-  return f;
-}
+// The cache of the pair taken the other way round (b to a).
+PairCache flipped(const PairCache& c) { return {-c.dir, c.hint_b, c.hint_a, c.warm, c.simplex.swapped()}; }
 
 }  // namespace
 

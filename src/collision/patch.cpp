@@ -16,7 +16,6 @@
 // and gives the normal the force is checked against; the potential is u(D)
 // alone.
 #include "collision/narrowphase.h"
-#include "collision/patch_cache.h"
 #include "collision/soft_depth.h"
 
 #include <algorithm>
@@ -118,108 +117,6 @@ __attribute__((optimize("fp-contract=off"))) double plane_distance(const EdgeScr
                                                                    const Vec3& p) {
   return x.c[k] - std::fma(x.mz[k], p.z(), x.mx[k] * p.x() + x.my[k] * p.y());
 }
-__attribute__((optimize("fp-contract=off"))) double plane_distance(const ConvexPolytope::Plane& pl,
-                                                                   const Vec3& p) {
-  return pl.c - std::fma(pl.m.z(), p.z(), pl.m.x() * p.x() + pl.m.y() * p.y());
-}
-
-// s's local frame seen from o's: x_o = to_o v + off (o's local units).
-struct Frame {
-  Mat3 to_o;
-  Vec3 off;
-  Frame(const PolytopeShape& s, const PolytopeShape& o)
-      : to_o(o.rot.transpose() * s.rot * (s.scale / o.scale)), off(o.rot.transpose() * (s.pos - o.pos) / o.scale) {}
-  Vec3 local(const ConvexPolytope& poly, Index v) const { return to_o * poly.vertex(v) + off; }
-};
-
-// Walks the lower envelope of the n lines l0[j] + sl[j] t over t in [0, 1]:
-// from t = 0, the lowest line there (ties: the one falling fastest), up to
-// the first line crossing below it, which continues it (ties: again the one
-// falling fastest), and so on; piece(j, t0, t1) for each stretch. With
-// `stop_outside`, it stops where the envelope is at or below 0 and falling
-// (it is concave: outside from there on).
-template <class Piece>
-void walk_envelope(const double* l0, const double* sl, std::size_t n, bool stop_outside, Piece piece) {
-  std::size_t cur = 0;
-  for (std::size_t j = 1; j < n; ++j)
-    if (l0[j] < l0[cur] || (l0[j] == l0[cur] && sl[j] < sl[cur])) cur = j;
-  double t0 = 0;
-  while (t0 < 1) {
-    const double slope = sl[cur], lc = l0[cur];
-    if (stop_outside && lc + slope * t0 <= 0 && slope <= 0) break;
-    double t1 = 1;
-    std::size_t next = cur;
-    for (std::size_t j = 0; j < n; ++j) {
-      const double sk = sl[j];
-      if (!(sk < slope)) continue;
-      // Line j meets the current one at tc = (l0[j] - lc) / (slope - sk)
-      // (slope - sk > 0): divide only when it can be the next crossing.
-      const double num = l0[j] - lc, den = slope - sk;
-      if (!(num < (t1 + 1e-12) * den)) continue;
-      const double tc = num / den;
-      if (!(tc > t0)) continue;
-      // The earliest crossing; of crossings equally early within rounding
-      // the line falling fastest. Slopes fall at every switch: at most n.
-      const bool earlier = tc < t1 - 1e-12;
-      const bool tied = !earlier && tc <= t1 + 1e-12 && next != cur && sk < sl[next];
-      if (earlier || tied) t1 = std::min(t1, tc), next = j;
-    }
-    piece(cur, t0, t1);
-    if (next == cur) break;
-    cur = next;
-    t0 = t1;
-  }
-}
-
-// Gap, at tie level, that a line left out of a cached edge keeps above the
-// envelope (patch_cache.h): far above the walk's 1e-12 ties.
-constexpr double kTieSlack = 1e-9;
-
-// What a filling call records of one side of the pair (patch_cache.h).
-struct Recorder {
-  std::vector<PatchCache::Edge>& edges;
-  std::vector<std::uint32_t>& lines;
-  double margin;      // o's local units
-  double reach = 0;   // largest |v| of the edges' ends
-};
-
-// The pieces of the edge from s's vertex v to w inside o, walked over the n
-// lines (l0, sl: depth at v and its change to w, o's local units; pl: the
-// line's plane, a position in o_planes), into the soft depth.
-void walk_edge(const PolytopeShape& s, Index v, Index w, const PolytopeShape& o, const std::vector<Index>& o_planes,
-               double sign, const double* l0, const double* sl, const std::uint32_t* pl, std::size_t n,
-               SoftDepth& soft) {
-  const ConvexPolytope& poly = *s.poly;
-  const Vec3 p = s.pos + s.scale * (s.rot * poly.vertex(v));
-  const Vec3 e = s.scale * (s.rot * (poly.vertex(w) - poly.vertex(v)));
-  walk_envelope(l0, sl, n, true, [&](std::size_t cur, double t0, double t1) {
-    const double slope = sl[cur], lc = l0[cur];
-    soft.add_linear_piece(p + t0 * e, p + t1 * e, (lc + slope * t0) * o.scale, (lc + slope * t1) * o.scale,
-                          sign * (o.rot * o.poly->planes()[o_planes[pl[cur]]].m));
-  });
-}
-
-// The edge v-w walked over its kept lines (positions in o_planes; dp(k),
-// dq(k): line k's depth at v and at w): skipped, as
-// add_edges skips it, where one line is outside at both ends. A skip that
-// only a line left out would make changes nothing: that line lies above
-// the envelope by the margin, so the envelope is below -kTieSlack at every
-// corner and no piece has a positive depth (patch_cache.h).
-template <class DepthAtV, class DepthAtW>
-void kept_walk(const PolytopeShape& s, Index v, Index w, const PolytopeShape& o, const std::vector<Index>& o_planes,
-               double sign, const DepthAtV& dp, const DepthAtW& dq, const std::uint32_t* kept, std::uint32_t count,
-               EdgeScratch& x, SoftDepth& soft) {
-  double* const l0 = x.l0.data();
-  double* const sl = x.slope.data();
-  std::uint32_t* const pl = x.line_plane.data();
-  for (std::uint32_t j = 0; j < count; ++j) {
-    const std::uint32_t k = kept[j];
-    const double d0 = dp(k), d1 = dq(k);
-    if (d0 <= 0 && d1 <= 0) return;
-    l0[j] = d0, sl[j] = d1 - d0, pl[j] = k;
-  }
-  walk_edge(s, v, w, o, o_planes, sign, l0, sl, pl, count, soft);
-}
 
 // Adds the parts of the edges of `s` at the vertices `verts` that lie inside
 // `o` to the soft depth: along an edge x(t) = p + t (q - p), t in [0, 1], the
@@ -235,13 +132,8 @@ void kept_walk(const PolytopeShape& s, Index v, Index w, const PolytopeShape& o,
 // outside of) and gets its whole row only when that plane does not put it
 // outside; an edge whose ends are outside one plane is skipped. What is
 // skipped is what the envelope test (U <= 0 below) would skip.
-// With `rec`, it also records (patch_cache.h) every edge that is not
-// outside o by rec->margin at least, with the lines within rec->margin of
-// its whole envelope, and walks those lines instead of the filtered ones
-// (the same pieces: patch_cache.h), as a cached call will.
 void add_edges(const PolytopeShape& s, const std::vector<Index>& verts, const PolytopeShape& o,
-               const std::vector<Index>& o_planes, double sign, EdgeScratch& x, SoftDepth& soft,
-               Recorder* rec = nullptr) {
+               const std::vector<Index>& o_planes, double sign, EdgeScratch& x, SoftDepth& soft) {
   const ConvexPolytope& poly = *s.poly;
   const std::size_t np = o_planes.size();
   if (np == 0) return;
@@ -258,8 +150,9 @@ void add_edges(const PolytopeShape& s, const std::vector<Index>& verts, const Po
   x.rows.begin(poly.size());
   x.classes.begin(poly.size());
   x.dist.clear();
-  const Frame frame(s, o);
-  const auto local = [&](Index v) -> Vec3 { return frame.local(poly, v); };
+  const Mat3 to_o = o.rot.transpose() * s.rot * (s.scale / o.scale);  // local s -> local o
+  const Vec3 off = o.rot.transpose() * (s.pos - o.pos) / o.scale;
+  const auto local = [&](Index v) -> Vec3 { return to_o * poly.vertex(v) + off; };
   const auto distance = [&](std::size_t k, const Vec3& pl) { return plane_distance(x, k, pl); };
   const auto row = [&](Index v, const Vec3& pl) -> std::size_t {  // v's row (dist may grow: an offset)
     if (!x.rows.mark(v)) return x.row_of[v];
@@ -268,40 +161,6 @@ void add_edges(const PolytopeShape& s, const std::vector<Index>& verts, const Po
     plane_distances(x, npp, pl, x.dist.data() + r);
     x.row_of[v] = static_cast<std::uint32_t>(r);
     return r;
-  };
-  const auto walk = [&](Index v, Index w, const double* l0, const double* sl, const std::uint32_t* pl,
-                        std::size_t n) { walk_edge(s, v, w, o, o_planes, sign, l0, sl, pl, n, soft); };
-  // Records the edge v-w unless it is `outside` o by rec->margin, with the
-  // lines within rec->margin of its whole envelope, and walks those as a
-  // cached call will (kept_walk).
-  const auto record = [&](Index v, const Vec3& vl, Index w, const Vec3& wl, double outside) {
-    rec->reach = std::max({rec->reach, poly.vertex(v).norm(), poly.vertex(w).norm()});
-    if (outside >= rec->margin) return;
-    const std::size_t rv = row(v, vl), rw = row(w, wl);
-    const double* dp = x.dist.data() + rv;
-    const double* dq = x.dist.data() + rw;
-    double* const l0 = x.l0.data();
-    double* const sl = x.slope.data();
-    for (std::size_t k = 0; k < np; ++k) l0[k] = dp[k], sl[k] = dq[k] - dp[k];
-    // The whole envelope's corners, then each line's least height above it.
-    thread_local std::vector<double> corner_t, corner_e;
-    corner_t.clear(), corner_e.clear();
-    walk_envelope(l0, sl, np, false, [&](std::size_t cur, double t0, double) {
-      corner_t.push_back(t0), corner_e.push_back(l0[cur] + sl[cur] * t0);
-    });
-    double e1 = std::numeric_limits<double>::infinity();  // and its end at t = 1
-    for (std::size_t k = 0; k < np; ++k) e1 = std::min(e1, dq[k]);
-    corner_t.push_back(1.0), corner_e.push_back(e1);
-    const std::uint32_t first = static_cast<std::uint32_t>(rec->lines.size());
-    for (std::size_t k = 0; k < np; ++k) {
-      double gap = std::numeric_limits<double>::infinity();
-      for (std::size_t c = 0; c < corner_t.size(); ++c) gap = std::min(gap, l0[k] + sl[k] * corner_t[c] - corner_e[c]);
-      if (gap < rec->margin) rec->lines.push_back(static_cast<std::uint32_t>(k));
-    }
-    const std::uint32_t count = static_cast<std::uint32_t>(rec->lines.size()) - first;
-    rec->edges.push_back({v, w, first, count});
-    kept_walk(s, v, w, o, o_planes, sign, [dp](std::uint32_t k) { return dp[k]; },
-              [dq](std::uint32_t k) { return dq[k]; }, rec->lines.data() + first, count, x, soft);
   };
   std::int32_t hint = 0;  // the plane the last vertex classed was outside of
   const auto outside_plane = [&](Index v, const Vec3& pl) -> std::int32_t {  // a plane v is outside of, or -1
@@ -328,17 +187,10 @@ void add_edges(const PolytopeShape& s, const std::vector<Index>& verts, const Po
       if (x.member.stamp[w] == x.member.generation && w < v) continue;  // taken from w's side
       if (!poly.is_edge(it)) continue;
       const Vec3 wl = local(w);
-      // Both ends outside one plane: the edge is outside o (recorded unless
-      // by the margin).
-      if (kv >= 0 && distance(kv, wl) <= 0) {
-        if (rec) record(v, vl, w, wl, -std::max(distance(kv, vl), distance(kv, wl)));
-        continue;
-      }
+      // Both ends outside one plane: the edge is outside o.
+      if (kv >= 0 && distance(kv, wl) <= 0) continue;
       const std::int32_t kw = outside_plane(w, wl);
-      if (kw >= 0 && distance(kw, vl) <= 0) {
-        if (rec) record(v, vl, w, wl, -std::max(distance(kw, vl), distance(kw, wl)));
-        continue;
-      }
+      if (kw >= 0 && distance(kw, vl) <= 0) continue;
       const std::size_t rv = row(v, vl), rw = row(w, wl);
       const double* dp = x.dist.data() + rv;
       const double* dq = x.dist.data() + rw;
@@ -366,10 +218,6 @@ void add_edges(const PolytopeShape& s, const std::vector<Index>& verts, const Po
         e1 = lq[i] < e1 ? lq[i] : e1;
       }
       const double upper = std::min(std::min(u[0], u[1]), std::min(u[2], u[3]));
-      if (rec) {
-        record(v, vl, w, wl, -upper);
-        continue;
-      }
       if (upper <= 0) continue;
       const double min0 = std::min(std::min(e0[0], e0[1]), std::min(e0[2], e0[3]));
       const double min1 = std::min(std::min(e1[0], e1[1]), std::min(e1[2], e1[3]));
@@ -396,52 +244,48 @@ void add_edges(const PolytopeShape& s, const std::vector<Index>& verts, const Po
           n += keep[j] != 0;
         }
       }
-      walk(v, w, l0, sl, pl, n);
+      // Lower envelope of those lines: from t = 0, the lowest line there
+      // (ties: the one falling fastest), up to the first line crossing below
+      // it, which continues it (ties: again the one falling fastest), and so on.
+      std::size_t cur = 0;
+      for (std::size_t j = 1; j < n; ++j)
+        if (l0[j] < l0[cur] || (l0[j] == l0[cur] && sl[j] < sl[cur])) cur = j;
+      const Vec3 p = s.pos + s.scale * (s.rot * poly.vertex(v));
+      const Vec3 e = s.scale * (s.rot * (poly.vertex(w) - poly.vertex(v)));
+      double t0 = 0;
+      while (t0 < 1) {
+        const double slope = sl[cur], lc = l0[cur];
+        if (lc + slope * t0 <= 0 && slope <= 0) break;  // the envelope is concave: outside from here on
+        double t1 = 1;
+        std::size_t next = cur;
+        for (std::size_t j = 0; j < n; ++j) {
+          const double sk = sl[j];
+          if (!(sk < slope)) continue;
+          // Line j meets the current one at tc = (l0[j] - lc) / (slope - sk)
+          // (slope - sk > 0): divide only when it can be the next crossing.
+          const double num = l0[j] - lc, den = slope - sk;
+          if (!(num < (t1 + 1e-12) * den)) continue;
+          const double tc = num / den;
+          if (!(tc > t0)) continue;
+          // The earliest crossing; of crossings equally early within rounding
+          // the line falling fastest. Slopes fall at every switch: at most np.
+          const bool earlier = tc < t1 - 1e-12;
+          const bool tied = !earlier && tc <= t1 + 1e-12 && next != cur && sk < sl[next];
+          if (earlier || tied) t1 = std::min(t1, tc), next = j;
+        }
+        soft.add_linear_piece(p + t0 * e, p + t1 * e, (lc + slope * t0) * o.scale, (lc + slope * t1) * o.scale,
+                              sign * (o.rot * o.poly->planes()[o_planes[pl[cur]]].m));
+        if (next == cur) break;
+        cur = next;
+        t0 = t1;
+      }
     }
   }
 }
 
-// A cached call's side (patch_cache.h): the recorded edges of s, each
-// walked over its kept lines at the new poses.
-void replay_edges(const PolytopeShape& s, const PolytopeShape& o, const std::vector<Index>& o_planes, double sign,
-                  const std::vector<PatchCache::Edge>& edges, const std::vector<std::uint32_t>& lines, EdgeScratch& x,
-                  SoftDepth& soft) {
-  const Frame frame(s, o);
-  const auto& planes = o.poly->planes();
-  if (x.l0.size() < o_planes.size()) x.l0.resize(o_planes.size()), x.slope.resize(o_planes.size());
-  if (x.line_plane.size() < o_planes.size()) x.line_plane.resize(o_planes.size());
-  for (const PatchCache::Edge& e : edges) {
-    const Vec3 vl = frame.local(*s.poly, e.v), wl = frame.local(*s.poly, e.w);
-    const auto at = [&](const Vec3& p) {
-      return [&planes, &o_planes, p](std::uint32_t k) { return plane_distance(planes[o_planes[k]], p); };
-    };
-    kept_walk(s, e.v, e.w, o, o_planes, sign, at(vl), at(wl), lines.data() + e.first, e.count, x, soft);
-  }
-}
-
-// Whether the cache filled earlier gives this call's pieces (patch_cache.h):
-// the same hulls and candidate lists, and each side moved by less than its
-// margin allows.
-bool cache_holds(const PatchCache& c, const PolytopeShape& a, const PolytopeShape& b, const std::vector<Index>& va,
-                 const std::vector<Index>& vb, const std::vector<Index>& qa, const std::vector<Index>& qb) {
-  if (!c.filled || c.hulls[0] != a.poly || c.hulls[1] != b.poly) return false;
-  if (c.verts[0] != va || c.verts[1] != vb || c.planes[0] != qb || c.planes[1] != qa) return false;
-  const Frame frames[2] = {Frame(a, b), Frame(b, a)};
-  for (int k = 0; k < 2; ++k) {
-    const double delta = (frames[k].to_o - c.to_o[k]).norm() * c.reach[k] + (frames[k].off - c.off[k]).norm();
-    if (!(2 * delta + kTieSlack < c.margin[k])) return false;
-  }
-  return true;
-}
-
-// A cached line or edge is kept within this fraction of the overlap's
-// extent along the normal of the envelope (patch_cache.h): the cache then
-// holds while each body moves by less than half of that in the other's frame.
-constexpr double kMarginOfOverlap = 0.5;
-
 }  // namespace
 
-void contact_patch(const PolytopeShape& a, const PolytopeShape& b, ContactResult& r, PatchCache* cache) {
+void contact_patch(const PolytopeShape& a, const PolytopeShape& b, ContactResult& r) {
   if (!r.touching) return;
   const ConvexPolytope &pa = *a.poly, &pb = *b.poly;
   if (pa.planes().empty() || pb.planes().empty()) return;
@@ -462,32 +306,11 @@ void contact_patch(const PolytopeShape& a, const PolytopeShape& b, ContactResult
   if (!collect(pb, sb, -nlb, top_a - hb0, walk, vb)) return;
   gather_planes(pa, va, walk, qa);
   gather_planes(pb, vb, walk, qb);
-  for (auto* list : {&va, &vb, &qa, &qb}) std::sort(list->begin(), list->end());
 
   SoftDepth soft(b.pos);
   thread_local EdgeScratch scratch;
-  if (!cache) {
-    add_edges(a, va, b, qb, -1.0, scratch, soft);
-    add_edges(b, vb, a, qa, 1.0, scratch, soft);
-  } else if (cache_holds(*cache, a, b, va, vb, qa, qb)) {
-    replay_edges(a, b, qb, -1.0, cache->edges[0], cache->lines[0], scratch, soft);
-    replay_edges(b, a, qa, 1.0, cache->edges[1], cache->lines[1], scratch, soft);
-  } else {  // fill it
-    PatchCache& c = *cache;
-    const PolytopeShape* sides[2][2] = {{&a, &b}, {&b, &a}};
-    for (int k = 0; k < 2; ++k) {
-      const PolytopeShape &s = *sides[k][0], &o = *sides[k][1];
-      c.edges[k].clear(), c.lines[k].clear();
-      c.margin[k] = kMarginOfOverlap * (top_a - bot_b) / o.scale;
-      Recorder rec{c.edges[k], c.lines[k], c.margin[k]};
-      add_edges(s, k == 0 ? va : vb, o, k == 0 ? qb : qa, k == 0 ? -1.0 : 1.0, scratch, soft, &rec);
-      const Frame f(s, o);
-      c.to_o[k] = f.to_o, c.off[k] = f.off, c.reach[k] = rec.reach;
-      c.hulls[k] = s.poly;
-    }
-    c.verts[0] = va, c.verts[1] = vb, c.planes[0] = qb, c.planes[1] = qa;
-    c.filled = true;
-  }
+  add_edges(a, va, b, qb, -1.0, scratch, soft);
+  add_edges(b, vb, a, qa, 1.0, scratch, soft);
   // Nothing inside (an overlap too thin to resolve) or a force against the
   // normal (soft_depth.h): the point contact of the penetration depth stays.
   soft.finish(r, n);
