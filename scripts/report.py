@@ -263,6 +263,14 @@ class Run:
                 v, e = pick_peak(d.get("dilation_angle_deg"), d.get("shear_strain"))
         return v, e
 
+    def at_end(self, strain):
+        """Whether a largest value at `strain` lies in the last 5 % of the test's strain: the curve may still be
+        rising there, so it is not called a peak."""
+        e = self.series.get("shear_strain")
+        if strain is None or e is None or not np.any(np.isfinite(e)):
+            return False
+        return strain >= 0.95 * float(np.nanmax(e))
+
     def peak_psi(self, band=False):
         v = num(get(self.info, "peaks", "fabric_psi_band" if band else "fabric_psi"))
         if v is not None:
@@ -298,6 +306,11 @@ class Run:
                 k = np.nonzero(ok)[0][-1]
                 return float(lo[k]), float(hi[k]), "last sample of series.csv", "series.csv"
         return None
+
+
+# A largest value in the last 5 % of the test's strain is not called a peak (Run.at_end).
+NO_PEAK = ("no peak: {what} is largest at the end of the test and may still be rising; shear further "
+           "(shear.final_strain) to find its peak")
 
 
 def pick_peak(values, strain):
@@ -367,7 +380,8 @@ def fig_stress_ratio(run, out_dir):
     f = Figure("Stress ratio against shear strain", "Fig. 10a",
                "Shear force on the upper half over the normal force on the cap, F/N, against shear strain "
                "d<sub>h</sub>/L. The right axis reads the mobilised friction angle &phi; = atan(F/N) (Eq. 18); "
-               "the dot marks the peak.")
+               "the dot marks the peak, or the largest F/N where that lies in the last 5 % of the test's strain "
+               "(no peak reached: the curve may still be rising).")
     r = run.col("stress_ratio")
     if r is None:
         return f.missing("series.csv column stress_ratio")
@@ -376,8 +390,11 @@ def fig_stress_ratio(run, out_dir):
     phi_p, e_p = run.peak_friction()
     if phi_p is not None and e_p is not None:
         rp = math.tan(math.radians(phi_p))
+        what = "largest (at the end, no peak)" if run.at_end(e_p) else "peak"
+        if run.at_end(e_p):
+            f.notes.append(NO_PEAK.format(what="F/N"))
         ax.plot([100 * e_p], [rp], "o", color=BAND_COLOR, zorder=5,
-                label=f"peak: F/N = {rp:.3f}, $\\phi_p$ = {phi_p:.1f}° at $\\varepsilon_s$ = {100 * e_p:.1f} %")
+                label=f"{what}: F/N = {rp:.3f}, $\\phi$ = {phi_p:.1f}° at $\\varepsilon_s$ = {100 * e_p:.1f} %")
         ax.legend(loc="lower right")
     pct_axis(ax)
     ax.set_ylim(bottom=min(0.0, float(np.nanmin(r))))
@@ -403,7 +420,10 @@ def fig_vertical_displacement(run, out_dir):
     psi_p, e_p = run.peak_dilation()
     label = "cap displacement"
     if psi_p is not None and e_p is not None:
-        label += f" ($\\psi_p$ = {psi_p:.1f}° at $\\varepsilon_s$ = {100 * e_p:.1f} %)"
+        label += f" (largest $\\psi$ = {psi_p:.1f}° at $\\varepsilon_s$ = {100 * e_p:.1f} %"
+        label += ", the end: no peak)" if run.at_end(e_p) else ")"
+        if run.at_end(e_p):
+            f.notes.append(NO_PEAK.format(what="the dilation angle"))
     lines = ax.plot(run.strain_pct, 1e3 * dv, color=ALL_COLOR, lw=1.6, label=label)
     if psi_p is not None and e_p is not None:
         k = int(np.argmin(np.abs(run.series["shear_strain"] - e_p)))
@@ -804,7 +824,11 @@ def results_rows(run):
     i = run.info
     phi_p, e_phi = run.peak_friction()
     psi_p, e_psi = run.peak_dilation()
-    at = lambda e: f" at &epsilon;<sub>s</sub> = {fmt(100 * e, '.2f', '%')}" if e is not None else ""
+    def at(e):
+        if e is None:
+            return ""
+        end = " (the end of the test: no peak reached)" if run.at_end(e) else ""
+        return f" at &epsilon;<sub>s</sub> = {fmt(100 * e, '.2f', '%')}{end}"
     inertial = run.col("inertial_number")
     unb = run.col("unbalanced_force_ratio")
     dr = num(get(i, "preparation", "relative_density"))

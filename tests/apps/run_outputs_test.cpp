@@ -299,6 +299,31 @@ TEST(RunOutputs, ReportCommandWorksFromAnyFolderWithOut) {
   EXPECT_NE(rep.output.find("index.html"), std::string::npos) << rep.output;
 }
 
+// A largest F/N in the last 5 % of the test's strain is not called a peak:
+// the tiny run's report says so exactly when its peak strain is there, and a
+// copy whose run.json puts it at the final strain says so.
+TEST(RunOutputs, ReportCallsNoPeakALargestValueAtTheEnd) {
+  REQUIRE_RUN(r);
+  const std::string no_peak = "no peak: F/N is largest at the end of the test";
+  const nlohmann::json run = grainlab::read_json_file(r.out / "run.json");
+  const double final_strain = 0.02, at = run["peaks"]["strain_at_peak_friction"].get<double>();
+  const bool at_end = at >= 0.95 * final_strain - 1e-9;
+  EXPECT_EQ(read_file(r.out / "report" / "index.html").find(no_peak) != std::string::npos, at_end)
+      << "peak strain " << at;
+
+  const fs::path copy = r.dir / "no-peak";
+  fs::remove_all(copy);
+  fs::copy(r.out, copy, fs::copy_options::recursive);
+  nlohmann::json edited = run;
+  edited["peaks"]["strain_at_peak_friction"] = final_strain;
+  std::ofstream(copy / "run.json") << edited.dump(1);
+  const Result rep = run_grainlab("/", "report '" + copy.string() + "'");
+  ASSERT_EQ(rep.exit_code, 0) << rep.output;
+  const std::string html = read_file(copy / "report" / "index.html");
+  EXPECT_NE(html.find(no_peak), std::string::npos);
+  EXPECT_NE(html.find("(the end of the test: no peak reached)"), std::string::npos);
+}
+
 TEST(ReportCommand, EmbedsTheScriptOfTheSourceTree) {
   const fs::path source = fs::path(GRAINLAB_TEST_DATA).parent_path().parent_path() / "scripts" / "report.py";
   const fs::path dir = fs::temp_directory_path() / ("grainlab-embed-test-" + std::to_string(::getpid()));
