@@ -24,7 +24,7 @@ struct WorldSettings {
   // windows). Results do not depend on it.
   int threads = 0;
   ThreadTuning thread_tuning;
-  // Loops of cheap items (contact forces, integration, bounds, and every
+  // Loops of cheap items (contact forces, bounds, and integration and every
   // per-pair loop when all grains are spheres) run serially below this many
   // items: waking a second thread costs tens of microseconds per loop, and
   // a step has about eight loops. Measured on 510 glass beads (the triaxial
