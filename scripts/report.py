@@ -420,8 +420,10 @@ def fig_vertical_displacement(run, out_dir):
     psi_p, e_p = run.peak_dilation()
     label = "cap displacement"
     if psi_p is not None and e_p is not None:
-        label += f" (largest $\\psi$ = {psi_p:.1f}° at $\\varepsilon_s$ = {100 * e_p:.1f} %"
-        label += ", the end: no peak)" if run.at_end(e_p) else ")"
+        if run.at_end(e_p):
+            label += f" (largest $\\psi$ = {psi_p:.1f}° at the end, $\\varepsilon_s$ = {100 * e_p:.1f} %: no peak)"
+        else:
+            label += f" ($\\psi_p$ = {psi_p:.1f}° at $\\varepsilon_s$ = {100 * e_p:.1f} %)"
         if run.at_end(e_p):
             f.notes.append(NO_PEAK.format(what="the dilation angle"))
     lines = ax.plot(run.strain_pct, 1e3 * dv, color=ALL_COLOR, lw=1.6, label=label)
