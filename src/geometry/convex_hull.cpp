@@ -81,6 +81,7 @@ ConvexHull convex_hull(std::span<const Vec3> points) {
         if (new_id[i] >= 0) {
           new_id[i] = static_cast<Index>(hull.vertices.size());
           hull.vertices.push_back(points[i]);
+          hull.input_index.push_back(static_cast<Index>(i));
         }
       }
       Vec3 inside = Vec3::Zero();

@@ -9,7 +9,8 @@ namespace grainlab {
 
 // A convex polytope: triangulated surface plus the edge graph for hill climbing.
 struct ConvexHull {
-  std::vector<Vec3> vertices;   // hull vertices only
+  std::vector<Vec3> vertices;   // hull vertices only, in input order
+  std::vector<Index> input_index;  // per hull vertex: its index in the input points
   std::vector<Face> faces;      // triangulated, outward (counter-clockwise from outside)
   // Vertex adjacency in compressed rows: neighbours of v are
   // adjacency[adjacency_offsets[v] .. adjacency_offsets[v+1]).

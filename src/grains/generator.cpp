@@ -64,7 +64,6 @@
 #include <array>
 #include <cmath>
 #include <limits>
-#include <map>
 #include <numbers>
 #include <optional>
 #include <utility>
@@ -180,11 +179,8 @@ TriMesh refined_radially(const TriMesh& convex, double max_edge, int min_faces) 
     directions.push_back(d);
   }
   const ConvexHull hull = convex_hull(directions);
-  std::map<std::array<double, 3>, Index> index_of;
-  for (std::size_t i = 0; i < directions.size(); ++i)
-    index_of[{directions[i].x(), directions[i].y(), directions[i].z()}] = static_cast<Index>(i);
   TriMesh m;
-  for (const Vec3& d : hull.vertices) m.vertices.push_back(points[index_of.at({d.x(), d.y(), d.z()})]);
+  for (const Index i : hull.input_index) m.vertices.push_back(points[i]);
   m.faces = hull.faces;
   return m;
 }

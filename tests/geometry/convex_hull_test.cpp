@@ -36,9 +36,13 @@ TEST(ConvexHull, RandomPointsContainedAndExtreme) {
   const ConvexHull h = convex_hull(pts);
   ASSERT_GE(h.vertices.size(), 4u);
   EXPECT_LT(h.vertices.size(), pts.size());
-  // Every hull vertex is an input point.
-  for (const Vec3& v : h.vertices) {
-    EXPECT_NE(std::find(pts.begin(), pts.end(), v), pts.end());
+  // Every hull vertex is an input point: the one its input_index names, in input order.
+  ASSERT_EQ(h.input_index.size(), h.vertices.size());
+  for (std::size_t k = 0; k < h.vertices.size(); ++k) {
+    EXPECT_EQ(h.vertices[k], pts[h.input_index[k]]) << "hull vertex " << k;
+    if (k > 0) {
+      EXPECT_LT(h.input_index[k - 1], h.input_index[k]);
+    }
   }
   // Every point is on the inner side of every face.
   for (const Face& f : h.faces) {
