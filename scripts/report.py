@@ -391,10 +391,11 @@ def fig_stress_ratio(run, out_dir):
     if phi_p is not None and e_p is not None:
         rp = math.tan(math.radians(phi_p))
         what = "largest (at the end, no peak)" if run.at_end(e_p) else "peak"
+        phi = "$\\phi$" if run.at_end(e_p) else "$\\phi_p$"
         if run.at_end(e_p):
             f.notes.append(NO_PEAK.format(what="F/N"))
         ax.plot([100 * e_p], [rp], "o", color=BAND_COLOR, zorder=5,
-                label=f"{what}: F/N = {rp:.3f}, $\\phi$ = {phi_p:.1f}° at $\\varepsilon_s$ = {100 * e_p:.1f} %")
+                label=f"{what}: F/N = {rp:.3f}, {phi} = {phi_p:.1f}° at $\\varepsilon_s$ = {100 * e_p:.1f} %")
         ax.legend(loc="lower right")
     pct_axis(ax)
     ax.set_ylim(bottom=min(0.0, float(np.nanmin(r))))
@@ -422,10 +423,9 @@ def fig_vertical_displacement(run, out_dir):
     if psi_p is not None and e_p is not None:
         if run.at_end(e_p):
             label += f" (largest $\\psi$ = {psi_p:.1f}° at the end, $\\varepsilon_s$ = {100 * e_p:.1f} %: no peak)"
+            f.notes.append(NO_PEAK.format(what="the dilation angle"))
         else:
             label += f" ($\\psi_p$ = {psi_p:.1f}° at $\\varepsilon_s$ = {100 * e_p:.1f} %)"
-        if run.at_end(e_p):
-            f.notes.append(NO_PEAK.format(what="the dilation angle"))
     lines = ax.plot(run.strain_pct, 1e3 * dv, color=ALL_COLOR, lw=1.6, label=label)
     if psi_p is not None and e_p is not None:
         k = int(np.argmin(np.abs(run.series["shear_strain"] - e_p)))
