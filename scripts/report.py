@@ -904,7 +904,8 @@ def fig_peaks_vs_roundness(runs, out_dir):
     """Fig. 10c, d: peak friction and dilation angles against mean grain roundness."""
     f = Figure("Peak friction and dilation angles against mean roundness", "Fig. 10c, d",
                "Peak friction angle &phi;<sub>p</sub> (left) and peak dilation angle &psi;<sub>p</sub> (right) of "
-               "each run against the mean Wadell roundness R of its grains (run.json mean_roundness).")
+               "each run against the mean Wadell roundness R of its grains (run.json mean_roundness). An open "
+               "marker is a run whose largest value lies in the last 5 % of its strain: no peak reached.")
     have = [r for r in runs if num(r.info.get("mean_roundness")) is not None]
     lacking = [r.name for r in runs if r not in have]
     if not have:
@@ -916,11 +917,11 @@ def fig_peaks_vs_roundness(runs, out_dir):
     for ax, peak, ylabel, title in ((axes[0], Run.peak_friction, "peak friction angle $\\phi_p$ (deg)", "(c)"),
                                     (axes[1], Run.peak_dilation, "peak dilation angle $\\psi_p$ (deg)", "(d)")):
         for r in have:
-            v, _ = peak(r)
+            v, e = peak(r)
             if v is None:
                 continue
             R = float(r.info["mean_roundness"])
-            ax.plot([R], [v], "o", ms=8, color=col[id(r)])
+            ax.plot([R], [v], "o", ms=8, color=col[id(r)], mfc="none" if r.at_end(e) else col[id(r)])
             ax.annotate(r.label, (R, v), xytext=(6, 5), textcoords="offset points", fontsize=8)
         ax.set_xlabel("mean grain roundness R (–)")
         ax.set_ylabel(ylabel)
@@ -946,7 +947,9 @@ def comparison_table(runs, out_dir):
         wall = num(get(r.info, "timings", "wall_s"))
         rows.append([name, esc(r.preset), esc(r.sand), esc(get(r.info, "grains")), fmt(get(r.info, "mean_roundness"), ".3f"),
                      fmt(get(r.info, "preparation", "void_ratio"), ".4f"), fmt(None if dr is None else 100 * dr, ".1f"),
-                     fmt(phi_p, ".2f"), fmt(None if e_phi is None else 100 * e_phi, ".2f"), fmt(psi_p, ".2f"),
+                     fmt(phi_p, ".2f"),
+                     fmt(None if e_phi is None else 100 * e_phi, ".2f") + (" (the end: no peak)" if r.at_end(e_phi) else ""),
+                     fmt(psi_p, ".2f"),
                      f"{fmt(r.peak_psi(), '.3f')} / {fmt(r.peak_psi(band=True), '.3f')}",
                      fmt(get(r.info, "final", "friction_angle_deg"), ".2f"), fmt(get(r.info, "final", "void_ratio"), ".4f"),
                      fmt(None if wall is None else wall / 3600, ".2f")])

@@ -322,6 +322,22 @@ TEST(RunOutputs, ReportCallsNoPeakALargestValueAtTheEnd) {
   const std::string html = read_file(copy / "report" / "index.html");
   EXPECT_NE(html.find(no_peak), std::string::npos);
   EXPECT_NE(html.find("(the end of the test: no peak reached)"), std::string::npos);
+
+  // The comparison of the two: both figures, and its table marks each run without a peak.
+  const fs::path cmp = r.dir / "comparison";
+  fs::remove_all(cmp);
+  const Result both =
+      run_grainlab("/", "report '" + r.out.string() + "' '" + copy.string() + "' --out '" + cmp.string() + "'");
+  ASSERT_EQ(both.exit_code, 0) << both.output;
+  EXPECT_NE(both.output.find("figures written (2): stress_strain_overlay.png, peaks_vs_roundness.png"),
+            std::string::npos)
+      << both.output;
+  const std::string table = read_file(cmp / "index.html");
+  std::size_t marks = 0;
+  for (std::size_t at_ = table.find("(the end: no peak)"); at_ != std::string::npos;
+       at_ = table.find("(the end: no peak)", at_ + 1))
+    ++marks;
+  EXPECT_EQ(marks, at_end ? 2u : 1u);
 }
 
 TEST(ReportCommand, EmbedsTheScriptOfTheSourceTree) {
