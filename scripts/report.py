@@ -390,8 +390,7 @@ def fig_stress_ratio(run, out_dir):
     phi_p, e_p = run.peak_friction()
     if phi_p is not None and e_p is not None:
         rp = math.tan(math.radians(phi_p))
-        what = "largest (at the end, no peak)" if run.at_end(e_p) else "peak"
-        phi = "$\\phi$" if run.at_end(e_p) else "$\\phi_p$"
+        what, phi = ("largest (at the end, no peak)", "$\\phi$") if run.at_end(e_p) else ("peak", "$\\phi_p$")
         if run.at_end(e_p):
             f.notes.append(NO_PEAK.format(what="F/N"))
         ax.plot([100 * e_p], [rp], "o", color=BAND_COLOR, zorder=5,
