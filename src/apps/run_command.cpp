@@ -14,6 +14,7 @@
 #include "core/atomic_file.h"
 #include "io/checkpoint.h"
 #include "io/config.h"
+#include "io/config_reference.h"
 #include "io/json.h"
 #include "io/kept_preparations.h"
 #include "io/run_summary.h"
@@ -40,6 +41,7 @@ extern "C" void on_stop_signal(int sig) { g_stop_signal = sig; }
 struct RunOptions {
   std::string file;
   bool print_defaults = false;
+  bool print_reference = false;
   bool use_defaults = false;
   bool resume = false;
   bool quiet = false;
@@ -91,6 +93,10 @@ void write_run_json(const LabTest& test, const std::filesystem::path& out, doubl
 int run(const RunOptions& o) {
   if (o.print_defaults) {
     fmt::print("{}", default_config_toml(o.test));
+    return 0;
+  }
+  if (o.print_reference) {
+    fmt::print("{}", config_reference_markdown());
     return 0;
   }
   if (o.file.empty() && !o.use_defaults)
@@ -260,6 +266,9 @@ Command add_run_command(CLI::App& app) {
       "output.snapshot_interval of shear strain) and report/index.html to output.folder");
   cmd->add_option("file", o->file, "config file (TOML); see --print-defaults for every key with its unit");
   cmd->add_flag("--print-defaults", o->print_defaults, "print a complete, commented default config and exit");
+  cmd->add_flag("--print-reference", o->print_reference,
+                "print every config key of every test (table, default, unit, meaning) as Markdown and exit: "
+                "docs/config.md");
   cmd->add_flag("--default", o->use_defaults, "run the embedded default (a small box of rounded grains, Ottawa-like)");
   cmd->add_option("--test", o->test,
                   "the test of --default and --print-defaults: direct-shear (the default), oedometer or triaxial")
