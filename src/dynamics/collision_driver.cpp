@@ -7,6 +7,7 @@
 #include "core/parallel.h"
 
 #include <algorithm>
+#include <array>
 #include <cassert>
 #include <limits>
 
@@ -51,28 +52,44 @@ std::size_t first_contact_of(const std::vector<Contact>& contacts, Index a, Inde
 
 }  // namespace
 
-void CollisionDriver::classify_shapes(const Model& model) {
-  const bool compounds = std::any_of(model.shapes.begin(), model.shapes.end(),
-                                     [](const Shape& s) { return s.kind == ShapeKind::Compound; });
-  sub_contact_slots_ = compounds ? kMaxSubContacts : 1;  // only compound routines write more than one
-  spheres_only_ = std::all_of(model.shapes.begin(), model.shapes.end(),
-                              [](const Shape& s) { return s.kind == ShapeKind::Sphere; });
-  shapes_classified_ = model.shapes.size();
+void CollisionDriver::ask_table(const Model& model) {
+  std::array<bool, kShapeKindCount> grain{}, wall{};  // the kinds the model has
+  for (const Shape& sh : model.shapes) grain[static_cast<int>(sh.kind)] = true;
+  for (const WallModel& w : model.walls) wall[static_cast<int>(w.kind)] = true;
+  sub_contact_slots_ = 1, extra_caches_ = false, compact_ = true, keep_wall_pairs_ = true;
+  const auto meet = [&](int a, int b, bool walls) {
+    const PairNeeds& needs = pair_needs(static_cast<ShapeKind>(a), static_cast<ShapeKind>(b));
+    sub_contact_slots_ = std::max(sub_contact_slots_, needs.sub_contacts);
+    extra_caches_ = extra_caches_ || needs.extra_caches;
+    if (walls)
+      keep_wall_pairs_ = keep_wall_pairs_ && !needs.reads_cache;
+    else
+      compact_ = compact_ && needs.compact;
+  };
+  for (int b = 0; b < kShapeKindCount; ++b) {
+    if (!grain[b]) continue;
+    for (int a = 0; a <= b; ++a)
+      if (grain[a]) meet(a, b, false);
+    for (int w = 0; w < kShapeKindCount; ++w)
+      if (wall[w]) meet(w, b, true);
+  }
+  shapes_asked_ = model.shapes.size();
+  walls_asked_ = model.walls.size();
 }
 
 void CollisionDriver::bounds(const CollisionStep& s) {
-  if (s.model.shapes.size() != shapes_classified_) classify_shapes(s.model);
+  if (s.model.shapes.size() != shapes_asked_ || s.model.walls.size() != walls_asked_) ask_table(s.model);
   const std::size_t n = s.state.bodies.size();
   rot_.resize(n);
   aabb_.resize(n);
   const bool have_ref = s.state.x_at_rebuild.size() == n;
-  const bool spheres = spheres_only_;
-  sphere_poses_.resize(spheres ? n : 0);
+  const bool compact = compact_;
+  compact_poses_.resize(compact ? n : 0);
   const double max_sq = parallel_max(
       static_cast<std::ptrdiff_t>(n),
       [&](std::ptrdiff_t i) {
         rot_[i] = s.state.bodies[i].q.toRotationMatrix();
-        if (spheres) sphere_poses_[i] = {s.state.bodies[i].x, s.model.bodies[i].radius};
+        if (compact) compact_poses_[i] = {s.state.bodies[i].x, s.model.bodies[i].radius};
         return have_ref ? (s.state.bodies[i].x - s.state.x_at_rebuild[i]).squaredNorm() : 0.0;
       },
       0.0, s.settings.serial_below, s.threads);
@@ -101,22 +118,22 @@ void CollisionDriver::broadphase(const CollisionStep& s) {
     }
     carry_history(s.state.pairs, scratch_);
     s.state.pairs.swap(scratch_);
-    if (sub_contact_slots() > 1) assign_piece_caches(s, s.state.pairs, false, s.state.piece_caches);  // compounds
+    if (extra_caches_) assign_piece_caches(s, s.state.pairs, false, s.state.piece_caches);
     s.state.x_at_rebuild.resize(n);
     for (std::size_t i = 0; i < n; ++i) s.state.x_at_rebuild[i] = s.state.bodies[i].x;
     s.state.rebuild_pairs = false;
     ++s.profile.broadphase_rebuilds;
   }
   // Wall-grain candidates: few walls, found again every step (walls move),
-  // but in a world of spheres, whose wall routines keep nothing in the
-  // PairCache, they are kept while no wall has moved by skin/2 nor turned,
+  // but where no wall pair's routine reads its PairCache (PairNeeds; a world
+  // of spheres), they are kept while no wall has moved by skin/2 nor turned,
   // and found within a margin of 1.5 skins. That is exact: since they were
   // found, a grain has moved by at most a skin (skin/2 since the grain pairs'
   // rebuild, which finds these again, at most skin/2 before) and a wall by at
   // most skin/2, so a grain that may touch a wall now was within the margin.
   wall_rot_.resize(s.state.walls.size());
   for (std::size_t w = 0; w < s.state.walls.size(); ++w) wall_rot_[w] = s.state.walls[w].q.toRotationMatrix();
-  const bool keep = spheres_only_;
+  const bool keep = keep_wall_pairs_;
   if (keep && !wall_pairs_due(s)) return;
   const double margin = keep ? 1.5 * s.settings.skin : 0.0;
   scratch_.clear();
@@ -129,16 +146,16 @@ void CollisionDriver::broadphase(const CollisionStep& s) {
       CandidatePair pc;
       pc.a = static_cast<Index>(w);
       pc.b = static_cast<Index>(i);
-      // The GJK warm start of a faceted grain; a sphere's wall routines read
-      // no cache, so theirs stays the default: then a kept list and one found
-      // anew after a restore hold the same bits whenever each pair was found.
+      // The GJK warm start of a faceted grain; where no routine reads the
+      // cache, it stays the default: then a kept list and one found anew
+      // after a restore hold the same bits whenever each pair was found.
       if (!keep) pc.cache.dir = x - wx;
       scratch_.push_back(pc);
     }
   }
   carry_history(s.state.wall_pairs, scratch_);
   s.state.wall_pairs.swap(scratch_);
-  if (sub_contact_slots() > 1) assign_piece_caches(s, s.state.wall_pairs, true, s.state.wall_piece_caches);
+  if (extra_caches_) assign_piece_caches(s, s.state.wall_pairs, true, s.state.wall_piece_caches);
   s.state.wall_x_at_rebuild.clear();
   s.state.wall_q_at_rebuild.clear();
   if (!keep) return;
@@ -219,17 +236,6 @@ int CollisionDriver::collide_pair(const CollisionStep& s, CandidatePair& pc, Sub
   return collide_shapes(a, b, pc.cache, out, piece_block(s.state.piece_caches, pc, a, b));
 }
 
-inline ContactResult CollisionDriver::collide_spheres(const CandidatePair& pc) const {
-  // collide_pair for two spheres, from their compact poses, without building
-  // posed shapes or going through the shape-pair table: what
-  // routines::sphere_sphere computes. A sphere pair's cache is never warm.
-  const SpherePose& a = sphere_poses_[pc.a];
-  const SpherePose& b = sphere_poses_[pc.b];
-  const double reach = a.radius + b.radius;
-  if ((b.x - a.x).squaredNorm() > reach * reach) return ContactResult{};
-  return collide(SphereShape{a.x, a.radius}, SphereShape{b.x, b.radius});
-}
-
 int CollisionDriver::collide_wall(const CollisionStep& s, CandidatePair& pc, SubContact* out) {
   const PosedShape a = posed_wall(s.model, s.state, pc.a), b = posed_body(s.model, s.state, pc.b);
   return collide_shapes(a, b, pc.cache, out, piece_block(s.state.wall_piece_caches, pc, a, b));
@@ -241,19 +247,19 @@ void CollisionDriver::collide_list(const CollisionStep& s, std::vector<Candidate
   // Each pair collides into a per-thread buffer and copies its touching
   // results, in increasing sub-contact id, into its own fixed-capacity slot,
   // in parallel. Most pairs do not touch and write nothing but their count.
-  // Slots per pair: one unless
-  // a compound shape can touch in several places (only the compound routines
-  // write more than one result), so a world of convex grains writes densely;
-  // a pair of spheres is only counted here, its geometry made in the fill.
-  const std::size_t slots = static_cast<std::size_t>(sub_contact_slots());
+  // Slots per pair: the most any pair of the model's kinds writes
+  // (PairNeeds::sub_contacts: one unless a compound shape can touch in
+  // several places), so a world of convex grains writes densely; a compact
+  // pair is only counted here, its geometry made in the fill.
+  const std::size_t slots = static_cast<std::size_t>(sub_contact_slots_);
   if (sub_results_.size() < n * slots) sub_results_.resize(n * slots);
   sub_counts_.resize(n + 1);
-  const bool spheres = spheres_only_;
+  const bool compact = compact_ && !walls;
   parallel_for(
       static_cast<std::ptrdiff_t>(n),
       [&](std::ptrdiff_t k) {
-        if (spheres && !walls) {  // only counted: the fill below computes the geometry again
-          sub_counts_[k] = collide_spheres(pairs[k]).touching;
+        if (compact) {  // only counted: the fill below computes the geometry again
+          sub_counts_[k] = collide_compact(compact_poses_[pairs[k].a], compact_poses_[pairs[k].b]).touching;
           return;
         }
         SubContact* out = &sub_results_[static_cast<std::size_t>(k) * slots];
@@ -267,7 +273,7 @@ void CollisionDriver::collide_list(const CollisionStep& s, std::vector<Candidate
         }
         sub_counts_[k] = touching;
       },
-      32, s.threads, spheres ? s.settings.serial_below : 0);
+      32, s.threads, compact_ ? s.settings.serial_below : 0);
   // Each pair's place in the new list: an exclusive prefix sum, so the list is
   // sorted by (a, b, sub) as the pairs are by (a, b), whatever the threads.
   std::size_t total = 0;
@@ -298,9 +304,9 @@ void CollisionDriver::collide_list(const CollisionStep& s, std::vector<Candidate
           Contact& c = next[i];  // written in place: every field is set
           c.a = pair.a;
           c.b = pair.b;
-          if (spheres && !walls) {
+          if (compact) {
             c.sub = 0;
-            c.geo = collide_spheres(pair);
+            c.geo = collide_compact(compact_poses_[pair.a], compact_poses_[pair.b]);
           } else {
             c.sub = res[i - begin].sub;
             c.geo = res[i - begin].geo;
@@ -313,7 +319,7 @@ void CollisionDriver::collide_list(const CollisionStep& s, std::vector<Candidate
           c.normal_force = 0;
         }
       },
-      64, s.threads, spheres ? s.settings.serial_below : 0);
+      64, s.threads, compact_ ? s.settings.serial_below : 0);
   contacts.swap(next);
 }
 

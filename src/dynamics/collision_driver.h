@@ -14,6 +14,7 @@
 
 #include "collision/aabb.h"
 #include "collision/broadphase.h"
+#include "collision/dispatch.h"
 #include "collision/posed_shape.h"
 #include "dynamics/model.h"
 #include "dynamics/profile.h"
@@ -48,49 +49,45 @@ class CollisionDriver {
   // broadphase phase.
   PosedShape posed_body(const Model& model, const State& state, Index i) const;
   PosedShape posed_wall(const Model& model, const State& state, Index w) const;
-  // Every grain is a sphere, as of the last bounds phase: every pair takes
-  // the compact path, and the step's loops over bodies and pairs, of cheap
-  // items, keep the serial threshold (WorldSettings::serial_below).
-  bool compact() const { return spheres_only_; }
+  // Every grain-grain pair takes the table's compact path (PairNeeds::compact),
+  // as of the last bounds phase: the step's loops over bodies and pairs are
+  // of cheap items and keep the serial threshold (WorldSettings::serial_below).
+  bool compact() const { return compact_; }
 
  private:
-  // What the model's shapes allow, found again whenever their count changes
-  // (at the start of each bounds phase): shapes are only ever added.
-  void classify_shapes(const Model& model);
-  int sub_contact_slots() const { return sub_contact_slots_; }  // most sub-contacts one pair may write
+  // What the pairs of the model's kinds need, asked of the shape-pair table
+  // (collision/dispatch.h) whenever the count of shapes or walls changes (at
+  // the start of each bounds phase): they are only ever added.
+  void ask_table(const Model& model);
   bool wall_pairs_due(const CollisionStep& s) const;  // kept wall-grain candidates are out of date
-  // Gives each pair with a compound its block of piece-pair caches in
-  // `pool`: its own from `old_pool` if carried there (carry_history), else
-  // cold ones; `old_pool` and `pool` swap.
+  // Gives each pair that keeps extra caches (PairNeeds::extra_caches) its
+  // block of them in `pool`: its own from the old pool if carried there
+  // (carry_history), else cold ones; the old pool and `pool` swap.
   void assign_piece_caches(const CollisionStep& s, std::vector<CandidatePair>& pairs, bool walls,
                            std::vector<PairCache>& pool);
   int collide_pair(const CollisionStep& s, CandidatePair& pc, SubContact* out);
-  // collide_pair of two spheres (one result, sub 0); inlined, so that where
-  // only `touching` is read nothing else is computed.
-  [[gnu::always_inline]] inline ContactResult collide_spheres(const CandidatePair& pc) const;
   int collide_wall(const CollisionStep& s, CandidatePair& pc, SubContact* out);
   void collide_list(const CollisionStep& s, std::vector<CandidatePair>& pairs, bool walls,
                     std::vector<Contact>& contacts);
 
-  std::size_t shapes_classified_ = 0;
-  bool spheres_only_ = true;
-  int sub_contact_slots_ = 1;
+  std::size_t shapes_asked_ = 0, walls_asked_ = 0;  // model.shapes, model.walls as of ask_table()
+  int sub_contact_slots_ = 1;    // most sub-contacts one pair may write
+  bool extra_caches_ = false;    // some pair keeps extra caches
+  bool compact_ = true;          // every grain-grain pair takes the compact path
+  bool keep_wall_pairs_ = true;  // no wall-grain pair reads its cache: the list may be kept
   bool rebuild_due_ = true;  // bounds found the candidate pairs due for a rebuild
   SweepAndPrune sap_;
   std::vector<Mat3> rot_;
-  // A world of spheres: each body's centre and radius side by side (32 bytes,
-  // the narrowphase's only reads; a sphere's bounding radius is its radius).
-  struct SpherePose {
-    Vec3 x;
-    double radius;
-  };
-  std::vector<SpherePose> sphere_poses_;
+  // Where every pair is compact: each body's centre and radius side by side
+  // (the narrowphase's only reads; a compact shape's radius, PosedShape's,
+  // is its body's radius, and so is its bounding radius).
+  std::vector<CompactPose> compact_poses_;
   std::vector<Mat3> wall_rot_;  // wall rotations, as of the last broadphase
   std::vector<Aabb> aabb_;
   std::vector<BodyPair> candidates_;
   std::vector<CandidatePair> scratch_;
   std::vector<PairCache> piece_scratch_;
-  std::vector<SubContact> sub_results_;  // narrowphase: sub_contact_slots() per pair
+  std::vector<SubContact> sub_results_;  // narrowphase: sub_contact_slots_ per pair
   std::vector<int> sub_counts_;          // narrowphase: touching results per pair, then offsets
   // The contact lists being compacted, grains' [0] and walls' [1]: one each,
   // so that neither is value-initialised anew every step after the other.
