@@ -21,6 +21,7 @@ namespace {
 struct Entry {
   PairRoutine fn = nullptr;
   bool flip = false;  // fn is registered for (b, a)
+  PairNeeds needs{.sub_contacts = 0, .reads_cache = false};
 };
 
 using Table = std::array<std::array<Entry, kShapeKindCount>, kShapeKindCount>;
@@ -29,24 +30,32 @@ constexpr int idx(ShapeKind k) { return static_cast<int>(k); }
 
 constexpr Table make_table() {
   Table t{};
-  const auto reg = [&t](ShapeKind a, ShapeKind b, PairRoutine f) {
-    t[idx(a)][idx(b)] = {f, false};
-    if (!t[idx(b)][idx(a)].fn) t[idx(b)][idx(a)] = {f, a != b};
+  const auto reg = [&t](ShapeKind a, ShapeKind b, PairRoutine f, PairNeeds needs) {
+    t[idx(a)][idx(b)] = {f, false, needs};
+    if (!t[idx(b)][idx(a)].fn) t[idx(b)][idx(a)] = {f, a != b, needs};
   };
+  // What the pairs need (PairNeeds): one result and the pair's cache...
+  constexpr PairNeeds cached{};
+  // ... one result from exact geometry, no cache ...
+  constexpr PairNeeds exact{.reads_cache = false};
+  // ... and of two spheres, the compact path too ...
+  constexpr PairNeeds compact{.reads_cache = false, .compact = true};
+  // ... or a compound's: a result and a cache per piece (pair).
+  constexpr PairNeeds pieces{.sub_contacts = kMaxSubContacts, .extra_caches = routines::piece_pairs};
   // --- the registration block: one line per routine ---
   using K = ShapeKind;
-  reg(K::Sphere, K::Sphere, routines::sphere_sphere);
-  reg(K::Sphere, K::Polytope, routines::sphere_polytope);
-  reg(K::Polytope, K::Polytope, routines::polytope_polytope);
-  reg(K::Plane, K::Sphere, routines::plane_sphere);
-  reg(K::Plane, K::Polytope, routines::plane_polytope);
-  reg(K::Box, K::Sphere, routines::box_sphere);
-  reg(K::Box, K::Polytope, routines::box_polytope);
-  reg(K::Sphere, K::Compound, routines::any_compound);
-  reg(K::Polytope, K::Compound, routines::any_compound);
-  reg(K::Plane, K::Compound, routines::any_compound);
-  reg(K::Box, K::Compound, routines::any_compound);
-  reg(K::Compound, K::Compound, routines::compound_compound);
+  reg(K::Sphere, K::Sphere, routines::sphere_sphere, compact);
+  reg(K::Sphere, K::Polytope, routines::sphere_polytope, cached);
+  reg(K::Polytope, K::Polytope, routines::polytope_polytope, cached);
+  reg(K::Plane, K::Sphere, routines::plane_sphere, exact);
+  reg(K::Plane, K::Polytope, routines::plane_polytope, cached);
+  reg(K::Box, K::Sphere, routines::box_sphere, exact);
+  reg(K::Box, K::Polytope, routines::box_polytope, cached);
+  reg(K::Sphere, K::Compound, routines::any_compound, pieces);
+  reg(K::Polytope, K::Compound, routines::any_compound, pieces);
+  reg(K::Plane, K::Compound, routines::any_compound, pieces);
+  reg(K::Box, K::Compound, routines::any_compound, pieces);
+  reg(K::Compound, K::Compound, routines::compound_compound, pieces);
   return t;
 }
 
@@ -56,6 +65,8 @@ constexpr Table kTable = make_table();
 
 bool has_pair_routine(ShapeKind a, ShapeKind b) { return kTable[idx(a)][idx(b)].fn != nullptr; }
 
+const PairNeeds& pair_needs(ShapeKind a, ShapeKind b) { return kTable[idx(a)][idx(b)].needs; }
+
 namespace {
 
 // The cache of the pair taken the other way round (b to a).
@@ -64,10 +75,9 @@ PairCache flipped(const PairCache& c) { return {-c.dir, c.hint_b, c.hint_a, c.wa
 }  // namespace
 
 int piece_cache_count(const PosedShape& a, const PosedShape& b) {
-  const auto pieces = [](const PosedShape& s) {
-    return s.kind == ShapeKind::Compound ? static_cast<int>(s.compound->pieces.size()) : 1;
-  };
-  return a.kind == ShapeKind::Compound || b.kind == ShapeKind::Compound ? pieces(a) * pieces(b) : 0;
+  const Entry& e = kTable[idx(a.kind)][idx(b.kind)];
+  if (!e.needs.extra_caches) return 0;
+  return e.flip ? e.needs.extra_caches(b, a) : e.needs.extra_caches(a, b);
 }
 
 int collide_shapes(const PosedShape& a, const PosedShape& b, PairCache& cache, SubContact* out, PairCache* pieces) {

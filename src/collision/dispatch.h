@@ -1,10 +1,14 @@
 // The narrowphase's shape-pair table (the habit of Jolt's CollisionDispatch,
 // Box2D's s_registers, MuJoCo's mjCOLLISIONFUNC): one routine per ordered pair
-// of shape kinds, registered in one place (dispatch.cpp). A pair registered
-// only as (B, A) is served by that routine with the shapes swapped and the
-// normals flipped. Normals of the results point from a to b.
+// of shape kinds, registered in one place (dispatch.cpp) with what the pair
+// needs from the caller that keeps it (PairNeeds: its slots, its caches,
+// whether it takes the compact path), so that the caller (dynamics/
+// collision_driver.h) asks the table and never names a kind. A pair
+// registered only as (B, A) is served by that routine with the shapes
+// swapped and the normals flipped. Normals of the results point from a to b.
 #pragma once
 
+#include "collision/narrowphase.h"
 #include "collision/posed_shape.h"
 
 namespace grainlab {
@@ -18,6 +22,50 @@ namespace grainlab {
 using PairRoutine = int (*)(const PosedShape& a, const PosedShape& b, PairCache& cache, PairCache* pieces,
                             SubContact* out);
 
+// How many extra warm-start caches a pair of these posed shapes keeps
+// besides its PairCache (a compound's: one per piece pair).
+using ExtraCacheCount = int (*)(const PosedShape& a, const PosedShape& b);
+
+// What a pair of kinds needs from the caller that keeps it, declared with its
+// routine in the table.
+struct PairNeeds {
+  // Most sub-contacts its routine writes (1 to kMaxSubContacts): the slots
+  // the caller gives each pair.
+  int sub_contacts = 1;
+  // Its routine reads or updates the PairCache. A pair whose routine does
+  // not keeps the default cache, so its caller may keep such pairs in a
+  // candidate list found earlier (the wall pairs of spheres) with the bits
+  // of a list found anew.
+  bool reads_cache = true;
+  // How many extra caches a pair keeps (`pieces` of PairRoutine), the
+  // caller storing them from step to step; null: none.
+  ExtraCacheCount extra_caches = nullptr;
+  // Both shapes are a centre and a radius (CompactPose): collide_compact
+  // below gives the pair's one result (sub 0) from 32 bytes a shape, without
+  // posing shapes or calling through the table (the 2000-bead lab's path).
+  bool compact = false;
+};
+
+// What the pair of kinds (a, b) needs; all false / null where no routine is
+// registered.
+const PairNeeds& pair_needs(ShapeKind a, ShapeKind b);
+
+// A shape of a compact pair: its centre and its radius (PosedShape::pos and
+// ::radius), side by side.
+struct CompactPose {
+  Vec3 x;
+  double radius;
+};
+
+// The routine of a compact pair (PairNeeds::compact), with its bounding
+// spheres' test: inlined, so that where only `touching` is read nothing else
+// is computed. The same bits as the table's routine for the pair.
+[[gnu::always_inline]] inline ContactResult collide_compact(const CompactPose& a, const CompactPose& b) {
+  const double reach = a.radius + b.radius;
+  if ((b.x - a.x).squaredNorm() > reach * reach) return ContactResult{};
+  return collide(SphereShape{a.x, a.radius}, SphereShape{b.x, b.radius});
+}
+
 // True if a routine (direct or flipped) exists for kinds (a, b).
 bool has_pair_routine(ShapeKind a, ShapeKind b);
 
@@ -27,9 +75,9 @@ bool has_pair_routine(ShapeKind a, ShapeKind b);
 int collide_shapes(const PosedShape& a, const PosedShape& b, PairCache& cache, SubContact* out,
                    PairCache* pieces = nullptr);
 
-// How many piece-pair caches a pair of these shapes keeps: pieces of a
-// times pieces of b where either is a compound (a convex shape counts one),
-// else 0.
+// How many extra caches a pair of these shapes keeps (its PairNeeds'
+// extra_caches; 0 where it has none): a pair with a compound keeps one per
+// piece pair.
 int piece_cache_count(const PosedShape& a, const PosedShape& b);
 
 }  // namespace grainlab

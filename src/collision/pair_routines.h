@@ -23,5 +23,8 @@ int box_polytope(const PosedShape& a, const PosedShape& b, PairCache& c, PairCac
 // piece pair with its own cache in `pieces` (by sub-contact id) when given.
 int any_compound(const PosedShape& a, const PosedShape& b, PairCache& c, PairCache* pieces, SubContact* out);
 int compound_compound(const PosedShape& a, const PosedShape& b, PairCache& c, PairCache* pieces, SubContact* out);
+// Their piece-pair caches: pieces of a times pieces of b (a convex shape
+// counts one).
+int piece_pairs(const PosedShape& a, const PosedShape& b);
 
 }  // namespace grainlab::routines

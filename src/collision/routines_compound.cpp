@@ -180,6 +180,13 @@ void skipped(PairCache* pieces, std::size_t k) {
 
 }  // namespace
 
+int piece_pairs(const PosedShape& a, const PosedShape& b) {
+  const auto pieces = [](const PosedShape& s) {
+    return s.kind == ShapeKind::Compound ? static_cast<int>(s.compound->pieces.size()) : 1;
+  };
+  return pieces(a) * pieces(b);
+}
+
 int any_compound(const PosedShape& a, const PosedShape& b, PairCache& cache, PairCache* pieces, SubContact* out) {
   int n = 0;
   double size[kMaxSubContacts];

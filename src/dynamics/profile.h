@@ -21,11 +21,6 @@ struct StepProfile {
 
   double& operator[](Phase p) { return seconds[static_cast<int>(p)]; }
   double operator[](Phase p) const { return seconds[static_cast<int>(p)]; }
-  double total() const {
-    double t = 0;
-    for (double s : seconds) t += s;
-    return t;
-  }
 };
 
 }  // namespace grainlab

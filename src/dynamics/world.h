@@ -1,6 +1,9 @@
 // World: a Model, its State, and the step that advances them.
 //
-// World::step(dt) is a short recipe of named phases (DESIGN.md "The step"):
+// World::step(dt) is a short recipe of named phases (docs/architecture.md
+// "The step"), each in its own file: collision_driver.h (bounds, broadphase,
+// narrowphase), contact_forces.h (forces), integrator.h (integrate); the
+// time-step guard and the thread choice are step_guard.h's:
 //   bounds -> broadphase -> narrowphase -> forces -> controllers -> integrate
 //   -> bookkeeping,
 // each timed into `profile`. Lab protocols hook in as controllers (called after
@@ -8,9 +11,9 @@
 // velocities); the step itself does no I/O.
 #pragma once
 
-#include "collision/broadphase.h"
 #include "collision/posed_shape.h"
 #include "core/thread_tuner.h"
+#include "dynamics/collision_driver.h"
 #include "dynamics/model.h"
 #include "dynamics/profile.h"
 #include "dynamics/state.h"
@@ -87,10 +90,8 @@ class World {
   // Resultant force and torque on each body in the last step (N, N m).
   const std::vector<Vec3>& body_forces() const { return force_; }
   const std::vector<Vec3>& body_torques() const { return torque_; }
-  // World-frame rotation matrices of the bodies, as of the last step.
-  const std::vector<Mat3>& rotations() const { return rot_; }
   // Body i as the narrowphase sees it, as of the last step (for benches).
-  PosedShape posed_body(Index i) const;
+  PosedShape posed_body(Index i) const { return collisions_.posed_body(model, state, i); }
   // Threads the last step ran on, and the tuner that chose them when
   // settings.threads is 0 (core/thread_tuner.h).
   int step_threads() const { return step_threads_; }
@@ -98,63 +99,20 @@ class World {
 
  private:
   void prepare();
-  void compute_bounds();
-  void broadphase();
-  void narrowphase();
   void forces(double dt);
-  template <typename Law> void forces_with(double dt);
   void integrate(double dt);
   void bookkeeping();
   void mix_pair_table();
-  int collide_pair(CandidatePair& pc, SubContact* out);
-  // collide_pair of two spheres (one result, sub 0); inlined, so that where
-  // only `touching` is read nothing else is computed.
-  [[gnu::always_inline]] inline ContactResult collide_spheres(const CandidatePair& pc) const;
-  int collide_wall(CandidatePair& pc, SubContact* out);
-  void collide_list(std::vector<CandidatePair>& pairs, bool walls, std::vector<Contact>& contacts);
-  PosedShape posed_wall(Index w) const;
 
   std::vector<Controller> controllers_;
   PhaseOverrides overrides_;
   ThreadTuner tuner_;
   int step_threads_ = 1;  // this step's thread count (settings.threads, or the tuner's)
   std::vector<PairCoefficients> pair_table_;  // model.pair() with the friction overrides
-  SweepAndPrune sap_;
   bool prepared_ = false;
   bool prepared_once_ = false;  // prepare() has run before (the model changed since)
   double checked_dt_ = -1;  // the step last checked against the critical step
-  // What the model's shapes allow, found again whenever their count changes
-  // (classify_shapes(), at the start of each step): shapes are only ever added.
-  void classify_shapes();
-  bool spheres_only() const { return spheres_only_; }  // every grain shape is a sphere: pair loops are cheap
-  int sub_contact_slots() const { return sub_contact_slots_; }  // most sub-contacts one pair may write
-  std::size_t shapes_classified_ = 0;
-  bool spheres_only_ = true;
-  int sub_contact_slots_ = 1;
-  bool wall_pairs_due() const;  // a world of spheres: its kept wall-grain candidates are out of date
-  bool rebuild_due_ = true;  // compute_bounds found the candidate pairs due for a rebuild
-  std::vector<Mat3> rot_;
-  // A world of spheres: each body's centre and radius side by side (32 bytes,
-  // the narrowphase's only reads; a sphere's bounding radius is its radius).
-  struct SpherePose {
-    Vec3 x;
-    double radius;
-  };
-  std::vector<SpherePose> sphere_poses_;
-  std::vector<Mat3> wall_rot_;  // wall rotations, as of the last broadphase
-  std::vector<Aabb> aabb_;
-  std::vector<BodyPair> candidates_;
-  std::vector<CandidatePair> scratch_;
-  std::vector<PairCache> piece_scratch_;
-  // Gives each pair with a compound its block of piece-pair caches in
-  // `pool`: its own from `old_pool` if carried there (carry_history), else
-  // cold ones; `old_pool` and `pool` swap.
-  void assign_piece_caches(std::vector<CandidatePair>& pairs, bool walls, std::vector<PairCache>& pool);
-  std::vector<SubContact> sub_results_;  // narrowphase: sub_contact_slots() per pair
-  std::vector<int> sub_counts_;          // narrowphase: touching results per pair, then offsets
-  // The contact lists being compacted, grains' [0] and walls' [1]: one each,
-  // so that neither is value-initialised anew every step after the other.
-  std::vector<Contact> next_contacts_[2];
+  CollisionDriver collisions_;  // bounds, broadphase, narrowphase
   std::vector<Vec3> force_, torque_;
   // |v|^2 + |w|^2 of each body after the step: finite exactly when its
   // velocities are (the step's non-finite check; cheaper than its energy).

@@ -63,3 +63,54 @@ TEST(Dispatch, PairWithoutARoutineIsRefused) {
   SubContact out[kMaxSubContacts];
   EXPECT_THROW(collide_shapes(plane, box, cache, out), std::logic_error);
 }
+
+// The needs the table declares (PairNeeds) hold for what its routines do:
+// slots within kMaxSubContacts, a flipped pair needing what its direct one
+// does, and a pair declared compact gives through collide_compact the bits
+// of its table routine (after the caller's bounding-sphere test), without
+// touching the cache it declares it does not read.
+TEST(Dispatch, PairNeedsHoldForTheRoutines) {
+  for (int a = 0; a < kShapeKindCount; ++a)
+    for (int b = 0; b < kShapeKindCount; ++b) {
+      const auto ka = static_cast<ShapeKind>(a), kb = static_cast<ShapeKind>(b);
+      const PairNeeds& n = pair_needs(ka, kb);
+      if (!has_pair_routine(ka, kb)) continue;
+      EXPECT_GE(n.sub_contacts, 1);
+      EXPECT_LE(n.sub_contacts, kMaxSubContacts);
+      const PairNeeds& f = pair_needs(kb, ka);
+      EXPECT_EQ(n.sub_contacts, f.sub_contacts);
+      EXPECT_EQ(n.reads_cache, f.reads_cache);
+      EXPECT_EQ(n.extra_caches, f.extra_caches);
+      EXPECT_EQ(n.compact, f.compact);
+    }
+  Rng rng(11);
+  int touching = 0, compact_pairs = 0;
+  for (int k = 0; k < kShapeKindCount; ++k) {
+    const auto kind = static_cast<ShapeKind>(k);
+    if (!pair_needs(kind, kind).compact) continue;
+    ++compact_pairs;
+    for (int i = 0; i < 200; ++i) {
+      const CompactPose pa{Vec3(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)), rng.uniform(0.1, 0.8)};
+      const CompactPose pb{Vec3(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)), rng.uniform(0.1, 0.8)};
+      PosedShape a, b;
+      a.kind = b.kind = kind;
+      a.pos = pa.x, a.radius = pa.radius;
+      b.pos = pb.x, b.radius = pb.radius;
+      PairCache cache;
+      SubContact out[kMaxSubContacts];
+      const ContactResult fast = collide_compact(pa, pb);
+      const bool reach = (pb.x - pa.x).squaredNorm() <= (pa.radius + pb.radius) * (pa.radius + pb.radius);
+      ASSERT_EQ(collide_shapes(a, b, cache, out), 1);
+      EXPECT_EQ(cache.dir, PairCache{}.dir);
+      EXPECT_EQ(cache.warm, false);
+      EXPECT_EQ(fast.touching, out[0].geo.touching);
+      if (!reach) continue;
+      EXPECT_EQ(fast.depth, out[0].geo.depth);
+      EXPECT_EQ(fast.normal, out[0].geo.normal);
+      EXPECT_EQ(fast.point, out[0].geo.point);
+      touching += fast.touching;
+    }
+  }
+  EXPECT_GE(compact_pairs, 1);
+  EXPECT_GT(touching, 20);
+}
