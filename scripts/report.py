@@ -154,7 +154,8 @@ SINGLE_PNGS = ["stress_ratio.png", "vertical_displacement.png", "displacement_pr
                "series.png"]
 COMPARISON_PNGS = ["stress_strain_overlay.png", "peaks_vs_roundness.png"]
 TRIAXIAL_COMPARISON_PNGS = ["triaxial_overlay.png", "stress_paths.png", "mohr_circles.png"]
-# Everything a comparison may write besides index.html (both kinds: an --out folder may hold either).
+# What a comparison folder may hold besides index.html (both kinds: an --out folder may hold either); a direct
+# shear comparison removes all of it, a triaxial one keeps mohr_coulomb.json, which grainlab report writes.
 COMPARISON_OUTPUTS = COMPARISON_PNGS + TRIAXIAL_COMPARISON_PNGS + ["mohr_coulomb.json"]
 
 plt.rcParams.update({

@@ -5,8 +5,9 @@
 // run.json's micromechanics entries, and report/index.html with every figure
 // the report promised. Also `grainlab report` on its own.
 #include "io/json.h"
+#include "io/pvd_reader.h"
 #include "io/table.h"
-#include "io/vtk_reader.h"
+#include "io/vtp_reader.h"
 
 #include <gtest/gtest.h>
 
