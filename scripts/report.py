@@ -1,6 +1,7 @@
 #!/usr/bin/python3
 """The grainlab run report: HTML and PNG figures for direct shear runs (paper Figs. 10-17), oedometer and
-triaxial runs, and comparisons of direct shear runs or of triaxial runs (Mohr circles, c' and phi').
+triaxial runs, any other lab test (every series column against its progress), and comparisons of direct
+shear runs or of triaxial runs (Mohr circles, c' and phi').
 
 Usage (Debian's Python, which has matplotlib and numpy):
 
@@ -12,7 +13,8 @@ One run folder gives a report of that run; several give a comparison report
 that overlays their curves and tabulates their peaks against their mean grain
 roundness (direct shear), or their curves, stress paths, Mohr circles and the
 Mohr-Coulomb envelope fitted over them (triaxial runs at several confining
-stresses; the fit also goes to mohr_coulomb.json). The page works offline:
+stresses; `grainlab report` fits it and writes mohr_coulomb.json next to the
+page before it runs this script). The page works offline:
 inline CSS, no JavaScript, relative links to the PNGs written next to it. The figures mirror He, Zheng & Schaefer (2021),
 "Simulating shearing behavior of realistic granular soils using physics
 engine", Figs. 10-17.
@@ -37,10 +39,14 @@ Required (the script stops with a one-line message and exit status 1 without the
                consolidation, shear, numerics, output: {key: scalar}}, "seed",
                "grains" (count), "time_step_s", "density_scaling",
                "shear_speed_m_per_s", "mean_equivalent_diameter_m",
-               "mean_roundness" (optional), "preparation": {"void_ratio",
-               "relative_density", "target_void_ratio"}, "peaks":
+               "mean_roundness" (optional), "preparation": {"void_ratio" (whole
+               specimen), "bulk_void_ratio" (away from the walls), "relative_density",
+               "relative_density_own", "own_e_min", "own_e_max" (these three where the
+               grains' own index void ratios are known), "target_void_ratio"}, "peaks":
                {"friction_angle_deg", "strain_at_peak_friction", "stress_ratio",
-               "dilation_angle_deg", "strain_at_peak_dilation", "fabric_psi",
+               "dilation_angle_deg", "strain_at_peak_dilation", "friction_is_peak",
+               "dilation_is_peak" (false: the largest value lies in the last 5 % of the
+               strain, no peak reached), "fabric_psi",
                "fabric_psi_band" (both optional)}, "final": {"friction_angle_deg", "dilation_angle_deg",
                "void_ratio", "contact_force_mean_N" (optional: the mean normal contact
                force, where strong force chains begin)}, "timings": {"wall_s", "steps",
@@ -76,12 +82,20 @@ as the paper does (Fig. 11). Kanatani's density is
 f(n) = (1 / 4 pi) (1 + D2_ij n_i n_j + D4_ijkl n_i n_j n_k n_l), in 1/sr,
 integrating to one over the sphere.
 
+  mohr_coulomb.json          (a triaxial comparison's output folder, written there by
+                             `grainlab report`, src/io/mohr_coulomb_file.h): the envelopes
+                             fitted over the runs and each run's circles
+
 The report derives no number: every value it prints or plots is read from
-these files (the engine computes them: src/analysis/); it only picks values
-(a peak's row), converts units for display and draws. The one exception is
-the Mohr-Coulomb envelope of a triaxial comparison, which spans runs the
-engine never sees together: a closed-form least squares over run.json's
-peak and critical-state q/p' (see "Comparing triaxial runs" below).
+these files (the engine computes them: src/analysis/, also the peak rule and
+the Mohr-Coulomb fit); it picks values (a peak's row, a stage's last row),
+converts units for display and draws. What is left of arithmetic here is
+listed in docs/outputs.md ("What the report computes").
+
+A test this script has no figures of (config.test other than direct-shear,
+oedometer and triaxial) gets a generic page: every series column against the
+test's progress column (its first column after time_s) in series.png, and
+run.json's group named after the test in a table.
 
 Figures of one run: stress ratio F/N (Fig. 10a), cap vertical displacement
 (Fig. 10b), horizontal displacement against height with the band (Fig. 11),
@@ -92,11 +106,10 @@ of F/N and cap displacement (Fig. 10a, b), peak friction and dilation angles
 against mean roundness (Fig. 10c, d) and a table of peaks. Triaxial comparison:
 q/p' and eps_v against eps_a, stress paths in p'-q, Mohr circles at the peak
 and at the critical state with the fitted envelopes, a table of the fits
-(phi', c', R^2) and one of the runs; mohr_coulomb.json. Runs of different
+(phi', c', R^2, from mohr_coulomb.json) and one of the runs. Runs of different
 tests are not compared, nor oedometer runs.
 
-Output: index.html and the PNGs (and a triaxial comparison's mohr_coulomb.json)
-are (over)written in the output folder; PNGs of an earlier report that this
+Output: index.html and the PNGs are (over)written in the output folder; PNGs of an earlier report that this
 one does not draw are removed. At the end the
 script prints the path of index.html, the figures written and the notes. Exit
 status 0, or 1 with one line "report.py: error: ..." on stderr when a run
@@ -137,16 +150,23 @@ REQUIRED_COLUMNS = ["time_s", "shear_strain", "horizontal_displacement_m", "vert
 # Every PNG this script may write (so stale ones from an earlier report are removed).
 SINGLE_PNGS = ["stress_ratio.png", "vertical_displacement.png", "displacement_profile.png", "rotation.png",
                "coordination_number.png", "rose_diagram.png", "fabric_psi.png", "force_chains.png",
-               "e_log_sigma.png", "k0.png", "constrained_modulus.png", "triaxial_curves.png", "stress_path.png"]
+               "e_log_sigma.png", "k0.png", "constrained_modulus.png", "triaxial_curves.png", "stress_path.png",
+               "series.png"]
 COMPARISON_PNGS = ["stress_strain_overlay.png", "peaks_vs_roundness.png"]
 TRIAXIAL_COMPARISON_PNGS = ["triaxial_overlay.png", "stress_paths.png", "mohr_circles.png"]
-# Everything a comparison may write besides index.html (both kinds: an --out folder may hold either).
+# What a comparison folder may hold besides index.html (both kinds: an --out folder may hold either); a direct
+# shear comparison removes all of it, a triaxial one keeps mohr_coulomb.json, which grainlab report writes.
 COMPARISON_OUTPUTS = COMPARISON_PNGS + TRIAXIAL_COMPARISON_PNGS + ["mohr_coulomb.json"]
 
 plt.rcParams.update({
     "font.size": 10, "axes.titlesize": 11, "axes.labelsize": 10, "legend.fontsize": 9,
     "axes.grid": True, "grid.alpha": 0.3, "savefig.bbox": "tight", "savefig.dpi": DPI,
 })
+
+
+# The column each known test's series progresses along; a test not named here gets the generic report
+# (generic_report), which draws every column against its first column after time_s.
+PROGRESS_COLUMNS = {"direct-shear": "shear_strain", "oedometer": "stage", "triaxial": "axial_strain"}
 
 
 class ReportError(Exception):
@@ -213,14 +233,24 @@ class Run:
         if not isinstance(self.info, dict):
             raise ReportError(f"'{self.dir / 'run.json'}' is not a JSON object")
         self.test = get(self.info, "config", "test", default="direct-shear")
-        first = {"oedometer": "stage", "triaxial": "axial_strain"}.get(self.test, "shear_strain")
-        if first not in self.series:
-            raise ReportError(f"'{self.dir / 'series.csv'}' has no {first} column: not a grainlab {self.test} series")
+        first = PROGRESS_COLUMNS.get(self.test) or self.progress_column
+        if first is None or first not in self.series:
+            raise ReportError(f"'{self.dir / 'series.csv'}' has no {first or 'column besides time_s'}"
+                              + (" column" if first else "") + f": not a grainlab {self.test} series")
         if len(self.series[first]) == 0:
             raise ReportError(f"'{self.dir / 'series.csv'}' has a header but no rows: the run has not "
                               + ("loaded" if self.test == "oedometer" else "sheared") + " yet")
         self.name = self.dir.resolve().name
         self.label = self.preset or self.name
+
+    @property
+    def progress_column(self):
+        """The column a test's series progresses along: the known tests' own (PROGRESS_COLUMNS), else the first
+        column that is not time_s (the engine writes the time, then the test's progress); None without one."""
+        known = PROGRESS_COLUMNS.get(self.test)
+        if known is not None:
+            return known
+        return next((c for c in self.series if c != "time_s"), None)
 
     @property
     def preset(self):
@@ -248,35 +278,23 @@ class Run:
         h = num(get(self.info, "config", "box", "height"))
         return None if h is None else 0.5 * h
 
-    # Peak values: from run.json, else picked from the engine's series.
+    # Peak values, as the engine found and judged them (run.json "peaks"; src/analysis/peak.h).
+    def peak(self, what):
+        """(largest value, strain at it, whether it is a peak) of run.json's peaks for what = "friction" or
+        "dilation"; (None, None, True) without them. A run written before the engine judged its peaks (no
+        peaks.<what>_is_peak) has each largest value shown as its peak."""
+        v = num(get(self.info, "peaks", f"{what}_angle_deg"))
+        e = num(get(self.info, "peaks", f"strain_at_peak_{what}"))
+        return v, e, get(self.info, "peaks", f"{what}_is_peak", default=True) is not False
+
     def peak_friction(self):
-        v, e = num(get(self.info, "peaks", "friction_angle_deg")), num(get(self.info, "peaks", "strain_at_peak_friction"))
-        if v is None:
-            v, e = pick_peak(self.col("friction_angle_deg"), self.series["shear_strain"])
-        return v, e
+        return self.peak("friction")
 
     def peak_dilation(self):
-        v, e = num(get(self.info, "peaks", "dilation_angle_deg")), num(get(self.info, "peaks", "strain_at_peak_dilation"))
-        if v is None:
-            d = self.derived()
-            if d is not None:
-                v, e = pick_peak(d.get("dilation_angle_deg"), d.get("shear_strain"))
-        return v, e
-
-    def at_end(self, strain):
-        """Whether a largest value at `strain` lies in the last 5 % of the test's strain: the curve may still be
-        rising there, so it is not called a peak."""
-        e = self.series.get("shear_strain")
-        if strain is None or e is None or not np.any(np.isfinite(e)):
-            return False
-        return strain >= 0.95 * float(np.nanmax(e))
+        return self.peak("dilation")
 
     def peak_psi(self, band=False):
-        v = num(get(self.info, "peaks", "fabric_psi_band" if band else "fabric_psi"))
-        if v is not None:
-            return v
-        c = self.col("fabric_psi_band" if band else "fabric_psi")
-        return None if c is None else float(np.nanmax(c))
+        return num(get(self.info, "peaks", "fabric_psi_band" if band else "fabric_psi"))
 
     def derived(self):
         """analysis/derived.csv (the engine's per-sample derived series) as columns, or None."""
@@ -308,17 +326,9 @@ class Run:
         return None
 
 
-# A largest value in the last 5 % of the test's strain is not called a peak (Run.at_end).
+# The engine calls no largest value in the last 5 % of the test's strain a peak (run.json peaks.*_is_peak).
 NO_PEAK = ("no peak: {what} is largest at the end of the test and may still be rising; shear further "
            "(shear.final_strain) to find its peak")
-
-
-def pick_peak(values, strain):
-    """(largest finite value, the strain at it), or (None, None)."""
-    if values is None or strain is None or not np.any(np.isfinite(values)):
-        return None, None
-    k = int(np.nanargmax(values))
-    return float(values[k]), float(strain[k])
 
 
 # ---------------------------------------------------------------------------
@@ -387,11 +397,11 @@ def fig_stress_ratio(run, out_dir):
         return f.missing("series.csv column stress_ratio")
     fig, ax = plt.subplots(figsize=(6.4, 4.0))
     ax.plot(run.strain_pct, r, color=ALL_COLOR, lw=1.6, label="F/N")
-    phi_p, e_p = run.peak_friction()
-    if phi_p is not None and e_p is not None:
-        rp = math.tan(math.radians(phi_p))
-        what, phi = ("largest (at the end, no peak)", "$\\phi$") if run.at_end(e_p) else ("peak", "$\\phi_p$")
-        if run.at_end(e_p):
+    phi_p, e_p, is_peak = run.peak_friction()
+    rp = num(get(run.info, "peaks", "stress_ratio"))
+    if phi_p is not None and e_p is not None and rp is not None:
+        what, phi = ("peak", "$\\phi_p$") if is_peak else ("largest (at the end, no peak)", "$\\phi$")
+        if not is_peak:
             f.notes.append(NO_PEAK.format(what="F/N"))
         ax.plot([100 * e_p], [rp], "o", color=BAND_COLOR, zorder=5,
                 label=f"{what}: F/N = {rp:.3f}, {phi} = {phi_p:.1f}° at $\\varepsilon_s$ = {100 * e_p:.1f} %")
@@ -417,10 +427,10 @@ def fig_vertical_displacement(run, out_dir):
     if dv is None:
         return f.missing("series.csv column vertical_displacement_m")
     fig, ax = plt.subplots(figsize=(6.4, 4.0))
-    psi_p, e_p = run.peak_dilation()
+    psi_p, e_p, is_peak = run.peak_dilation()
     label = "cap displacement"
     if psi_p is not None and e_p is not None:
-        if run.at_end(e_p):
+        if not is_peak:
             label += f" (largest $\\psi$ = {psi_p:.1f}° at the end, $\\varepsilon_s$ = {100 * e_p:.1f} %: no peak)"
             f.notes.append(NO_PEAK.format(what="the dilation angle"))
         else:
@@ -820,30 +830,49 @@ def inputs_rows(run):
     return rows
 
 
+def preparation_rows(run):
+    """(label, value HTML) rows of the prepared specimen's two void ratios and its relative density, named by
+    the void ratio and the index void ratios the engine computed D_r on: the grains' own e_min/e_max go with
+    the bulk void ratio (away from the walls), the lab's (config.specimen) with the whole specimen's."""
+    prep = lambda k: num(get(run.info, "preparation", k))
+    dr, own = prep("relative_density"), prep("relative_density_own")
+    if dr is not None and own is not None and dr == own:
+        on, indices = "bulk e", (f"the grains' own e<sub>min</sub> / e<sub>max</sub> {fmt(prep('own_e_min'), '.3f')}"
+                                 f" / {fmt(prep('own_e_max'), '.3f')}")
+    else:
+        c = lambda k: get(run.info, "config", "specimen", k)
+        on, indices = "whole specimen e", (f"the lab's e<sub>min</sub> / e<sub>max</sub> {fmt(c('e_min'), '.3f')}"
+                                           f" / {fmt(c('e_max'), '.3f')}")
+    return [
+        ("void ratio after preparation, whole specimen e", fmt(prep("void_ratio"), ".4f")),
+        ("void ratio after preparation, bulk e (away from the walls)", fmt(prep("bulk_void_ratio"), ".4f")),
+        (f"achieved relative density D<sub>r</sub>, on the {on}",
+         fmt(None if dr is None else 100 * dr, ".1f", "%") + ("" if dr is None else f" ({indices})")),
+    ]
+
+
 def results_rows(run):
     """(label, value HTML) rows of the run's peak and final values."""
     i = run.info
-    phi_p, e_phi = run.peak_friction()
-    psi_p, e_psi = run.peak_dilation()
-    def at(e):
+    phi_p, e_phi, phi_is_peak = run.peak_friction()
+    psi_p, e_psi, psi_is_peak = run.peak_dilation()
+    def at(e, is_peak):
         if e is None:
             return ""
-        end = " (the end of the test: no peak reached)" if run.at_end(e) else ""
+        end = "" if is_peak else " (the end of the test: no peak reached)"
         return f" at &epsilon;<sub>s</sub> = {fmt(100 * e, '.2f', '%')}{end}"
     inertial = run.col("inertial_number")
     unb = run.col("unbalanced_force_ratio")
-    dr = num(get(i, "preparation", "relative_density"))
     rows = [
-        ("peak friction angle &phi;<sub>p</sub>", fmt(phi_p, ".2f", "deg") + at(e_phi)),
+        ("peak friction angle &phi;<sub>p</sub>", fmt(phi_p, ".2f", "deg") + at(e_phi, phi_is_peak)),
         ("peak stress ratio F/N", fmt(get(i, "peaks", "stress_ratio"), ".4f")),
-        ("peak dilation angle &psi;<sub>p</sub>", fmt(psi_p, ".2f", "deg") + at(e_psi)),
+        ("peak dilation angle &psi;<sub>p</sub>", fmt(psi_p, ".2f", "deg") + at(e_psi, psi_is_peak)),
         ("peak fabric factor &Psi;<sub>p</sub>, all / band",
          f"{fmt(run.peak_psi(), '.4f')} / {fmt(run.peak_psi(band=True), '.4f')}"),
         ("final friction angle (last 10 % of the test)", fmt(get(i, "final", "friction_angle_deg"), ".2f", "deg")),
         ("final dilation angle (last 10 % of the test)", fmt(get(i, "final", "dilation_angle_deg"), ".2f", "deg")),
-        ("achieved void ratio e after preparation", fmt(get(i, "preparation", "void_ratio"), ".4f")),
-        ("achieved relative density D<sub>r</sub>", fmt(None if dr is None else 100 * dr, ".1f", "%")),
-        ("final void ratio", fmt(get(i, "final", "void_ratio"), ".4f")),
+        *preparation_rows(run),
+        ("final void ratio (whole specimen)", fmt(get(i, "final", "void_ratio"), ".4f")),
         ("mean grain roundness R", fmt(get(i, "mean_roundness"), ".3f")),
         ("inertial number I, max during shear",
          fmt(None if inertial is None else np.nanmax(inertial), ".2e") +
@@ -916,11 +945,11 @@ def fig_peaks_vs_roundness(runs, out_dir):
     for ax, peak, ylabel, title in ((axes[0], Run.peak_friction, "peak friction angle $\\phi_p$ (deg)", "(c)"),
                                     (axes[1], Run.peak_dilation, "peak dilation angle $\\psi_p$ (deg)", "(d)")):
         for r in have:
-            v, e = peak(r)
+            v, _, is_peak = peak(r)
             if v is None:
                 continue
             R = float(r.info["mean_roundness"])
-            ax.plot([R], [v], "o", ms=8, color=col[id(r)], mfc="none" if r.at_end(e) else col[id(r)])
+            ax.plot([R], [v], "o", ms=8, color=col[id(r)], mfc=col[id(r)] if is_peak else "none")
             ax.annotate(r.label, (R, v), xytext=(6, 5), textcoords="offset points", fontsize=8)
         ax.set_xlabel("mean grain roundness R (–)")
         ax.set_ylabel(ylabel)
@@ -931,13 +960,14 @@ def fig_peaks_vs_roundness(runs, out_dir):
 
 
 def comparison_table(runs, out_dir):
-    head = ["run", "grain class", "sand preset", "grains", "mean roundness R", "e after preparation", "D<sub>r</sub> (%)",
+    head = ["run", "grain class", "sand preset", "grains", "mean roundness R",
+            "e after preparation, whole / bulk", "D<sub>r</sub> (%)",
             "&phi;<sub>p</sub> (deg)", "&epsilon;<sub>s</sub> at &phi;<sub>p</sub> (%)", "&psi;<sub>p</sub> (deg)",
             "&Psi;<sub>p</sub> all / band", "final &phi; (deg)", "final e", "wall time (h)"]
     rows = []
     for r in runs:
-        phi_p, e_phi = r.peak_friction()
-        psi_p, _ = r.peak_dilation()
+        phi_p, e_phi, phi_is_peak = r.peak_friction()
+        psi_p, _, _ = r.peak_dilation()
         dr = num(get(r.info, "preparation", "relative_density"))
         report = r.dir / "report" / "index.html"
         name = esc(r.name)
@@ -945,9 +975,11 @@ def comparison_table(runs, out_dir):
             name = f'<a href="{html.escape(Path(os.path.relpath(report, out_dir)).as_posix())}">{name}</a>'
         wall = num(get(r.info, "timings", "wall_s"))
         rows.append([name, esc(r.preset), esc(r.sand), esc(get(r.info, "grains")), fmt(get(r.info, "mean_roundness"), ".3f"),
-                     fmt(get(r.info, "preparation", "void_ratio"), ".4f"), fmt(None if dr is None else 100 * dr, ".1f"),
+                     f'{fmt(get(r.info, "preparation", "void_ratio"), ".4f")} / '
+                     f'{fmt(get(r.info, "preparation", "bulk_void_ratio"), ".4f")}',
+                     fmt(None if dr is None else 100 * dr, ".1f"),
                      fmt(phi_p, ".2f"),
-                     fmt(None if e_phi is None else 100 * e_phi, ".2f") + (" (the end: no peak)" if r.at_end(e_phi) else ""),
+                     fmt(None if e_phi is None else 100 * e_phi, ".2f") + ("" if phi_is_peak else " (the end: no peak)"),
                      fmt(psi_p, ".2f"),
                      f"{fmt(r.peak_psi(), '.3f')} / {fmt(r.peak_psi(band=True), '.3f')}",
                      fmt(get(r.info, "final", "friction_angle_deg"), ".2f"), fmt(get(r.info, "final", "void_ratio"), ".4f"),
@@ -1140,7 +1172,7 @@ def fig_constrained_modulus(run, out_dir):
         return f.missing("loading increments with a positive modulus")
     fig, ax = plt.subplots(figsize=(6.4, 4.0))
     fitted = ok.copy()
-    fitted[np.argmax(ok)] = False  # the first loading increment rearranges the preparation's stress: not fitted
+    fitted[np.flatnonzero(ok)[0]] = False  # the first loading increment rearranges the preparation's stress: not fitted
     ax.plot(1e-3 * mid[fitted], 1e-6 * m[fitted], "o", color=ALL_COLOR, label="loading increments")
     first = ok & ~fitted
     ax.plot(1e-3 * mid[first], 1e-6 * m[first], "o", mfc="white", color=ALL_COLOR,
@@ -1165,7 +1197,6 @@ def fig_constrained_modulus(run, out_dir):
 def oedometer_results_rows(run):
     i = run.info
     o = lambda k: get(i, "oedometer", k)
-    dr = num(get(i, "preparation", "relative_density"))
     unb = run.col("unbalanced_force_ratio")
     return [
         ("compression index C<sub>c</sub>", fmt(o("compression_index"), ".4f")),
@@ -1175,9 +1206,8 @@ def oedometer_results_rows(run):
         ("constrained modulus at the largest stress",
          fmt(1e-6 * (num(o("constrained_modulus_at_max_stress_Pa")) or float("nan")), ".4g", "MPa")),
         ("power n of M ~ &sigma;<sup>n</sup> (loading)", fmt(o("modulus_stress_exponent"), ".3f")),
-        ("achieved void ratio e after preparation", fmt(get(i, "preparation", "void_ratio"), ".4f")),
-        ("achieved relative density D<sub>r</sub>", fmt(None if dr is None else 100 * dr, ".1f", "%")),
-        ("final void ratio", fmt(o("final_void_ratio"), ".4f")),
+        *preparation_rows(run),
+        ("final void ratio (whole specimen)", fmt(o("final_void_ratio"), ".4f")),
         ("unbalanced force ratio, largest at a stage's end", fmt(None if unb is None else np.nanmax(unb), ".3g")),
         ("wall time", fmt_duration(get(i, "timings", "wall_s"))),
         ("steps / simulated time", f"{esc(get(i, 'timings', 'steps'))} / {fmt(get(i, 'timings', 'simulated_s'), '.4g', 's')}"),
@@ -1283,7 +1313,6 @@ def fig_stress_path(run, out_dir):
 def triaxial_results_rows(run):
     t = lambda k: get(run.info, "triaxial", k)
     inertial, err = run.col("inertial_number"), run.col("side_stress_error")
-    dr = num(get(run.info, "preparation", "relative_density"))
     return [
         ("peak friction angle &phi;'<sub>p</sub> (q/p')", fmt(t("peak_friction_angle_deg"), ".2f", "deg") +
          f" at &epsilon;<sub>a</sub> = {fmt(100 * (num(t('axial_strain_at_peak')) or float('nan')), '.2f', '%')}"),
@@ -1295,7 +1324,7 @@ def triaxial_results_rows(run):
         ("secant modulus E<sub>50</sub>", fmt(1e-6 * (num(t("e50_Pa")) or float("nan")), ".4g", "MPa")),
         ("void ratio at the start of shear / at the end", f"{fmt(t('void_ratio_at_shear'), '.4f')} / "
                                                           f"{fmt(t('final_void_ratio'), '.4f')}"),
-        ("achieved relative density D<sub>r</sub> (preparation)", fmt(None if dr is None else 100 * dr, ".1f", "%")),
+        *preparation_rows(run),
         ("&sigma;<sub>3</sub> held: side stress error, mean / worst",
          "&mdash;" if err is None else f"{100 * np.nanmean(err[1:]):.2f} % / {100 * np.nanmax(err[1:]):.2f} %"),
         ("inertial number I, max during shear", fmt(None if inertial is None else np.nanmax(inertial), ".2e")),
@@ -1326,40 +1355,16 @@ def triaxial_report(run, out_dir):
 # Comparing triaxial runs at several confining stresses: overlays, stress
 # paths, Mohr circles and the Mohr-Coulomb envelope fitted over the runs.
 #
-# Each run gives two circles: at the peak and at the critical state. Their
-# stresses come from run.json (the values the single-run report shows): the
-# engine's q/p' (triaxial.peak_stress_ratio, critical_stress_ratio) and
-# sigma_3 = config.consolidation.normal_stress, the cell pressure the sides'
-# servos hold. With p' = (sigma_1 + 2 sigma_3)/3 and q = sigma_1 - sigma_3,
-# eta = q/p' gives sigma_1 (3 - eta) = sigma_3 (3 + 2 eta):
-#     sigma_1 = sigma_3 (3 + 2 eta) / (3 - eta).
-# A run alone (c' = 0) has sin phi' = (sigma_1 - sigma_3)/(sigma_1 + sigma_3)
-# = 3 eta / (6 + eta), run.json's friction angle.
-#
-# The fit. A circle of centre s' = (sigma_1 + sigma_3)/2 and radius
-# t = (sigma_1 - sigma_3)/2 touches the line tau = c' + sigma' tan phi' when
-# the distance from (s', 0) to it equals t:
-#     (c' + s' tan phi') / sqrt(1 + tan^2 phi') = t,
-# i.e. (multiplying by cos phi')  t = c' cos phi' + s' sin phi' = a + s' sin phi'.
-# So the envelope tangent to every circle is the straight line t = a + b s' in
-# the s'-t plane (the MIT stress path plane's Kf line), with sin phi' = b and
-# c' = a / cos phi'. Least squares of t on s' over the runs gives a and b: the
-# exact common tangent when the (s', t) points line up (two runs always do),
-# the best straight envelope otherwise (R^2 and the rms residual of t tell how
-# far they are from a line). It is the one number the report computes: it
-# needs several runs, which the engine never sees together.
+# Each run gives two circles: at the peak and at the critical state. The
+# engine computes them and fits the envelopes (src/analysis/mohr_coulomb.h):
+# `grainlab report` writes mohr_coulomb.json next to the comparison's page
+# (src/io/mohr_coulomb_file.h) before it runs this script, which reads and
+# draws it. Run alone on triaxial runs, the script has no fit to show and
+# says so.
 
 def triaxial_sigma3(run):
     """sigma_3 of the run (Pa): the cell pressure its sides' servos held, config.consolidation.normal_stress."""
     return num(get(run.info, "config", "consolidation", "normal_stress"))
-
-
-def mohr_state(run, key):
-    """(sigma_1, sigma_3) in Pa at run.json's triaxial.<key> (a q/p'), or None when it is missing or not < 3."""
-    s3, eta = triaxial_sigma3(run), num(get(run.info, "triaxial", key))
-    if s3 is None or s3 <= 0 or eta is None or not 0 <= eta < 3:
-        return None
-    return s3 * (3 + 2 * eta) / (3 - eta), s3
 
 
 def tidy(x):
@@ -1367,42 +1372,36 @@ def tidy(x):
     return round(x, 9) + 0.0
 
 
-def mohr_coulomb_fit(points):
-    """Least squares t = a + b s' over [(s', t)] in Pa (see above). A dict with phi_deg, c_Pa, a_Pa, sin_phi,
-    r_squared, rms_residual_Pa, runs; or one with only 'refused' (why) when no envelope can be fitted."""
-    n = len(points)
-    if n < 2:
-        return {"refused": f"{n} run{'s' if n != 1 else ''} with the stresses needed: a fit needs two or more"}
-    s = np.array([p[0] for p in points], float)
-    t = np.array([p[1] for p in points], float)
-    ds, dt = s - s.mean(), t - t.mean()
-    sxx = float(np.sum(ds * ds))
-    if sxx <= (1e-9 * float(np.max(np.abs(s)))) ** 2:
-        return {"refused": "every circle has the same centre: give runs at different sigma_3"}
-    b = float(np.sum(ds * dt)) / sxx
-    a = float(t.mean()) - b * float(s.mean())
-    if not 0 < b < 1:
-        return {"refused": f"the best line has slope sin phi' = {b:.3f}, outside (0, 1): no envelope"}
-    phi = math.asin(b)
-    res = t - (a + b * s)
-    ss_res, ss_tot = float(np.sum(res * res)), float(np.sum(dt * dt))
-    return {"phi_deg": math.degrees(phi), "c_Pa": a / math.cos(phi), "a_Pa": a, "sin_phi": b,
-            "r_squared": 1 - ss_res / ss_tot if ss_tot > 0 else 1.0,
-            "rms_residual_Pa": math.sqrt(ss_res / n), "runs": n}
-
+# What mohr_coulomb.json lacks when this script was run without grainlab report.
+MOHR_MISSING = ("mohr_coulomb.json", "grainlab report fits the envelopes and writes it next to the page: "
+                "compare the runs with `grainlab report RUN_A RUN_B ...`")
 
 ENVELOPES = (("peak", "peak_stress_ratio", "peak_friction_angle_deg", "peak"),
              ("critical_state", "critical_stress_ratio", "critical_friction_angle_deg", "critical state"))
 
 
-def triaxial_mohr(runs):
-    """Per envelope ('peak', 'critical_state'): the runs' circles [(run, sigma_1, sigma_3)], the fit and the
-    runs left out (names)."""
+def read_mohr(runs, out_dir):
+    """mohr_coulomb.json of the comparison (grainlab report writes it in out_dir) as, per envelope ('peak',
+    'critical_state'): the runs' circles [(run, sigma_1, sigma_3)], the fit (with only 'refused' when the
+    engine fitted none) and the runs left out (names); None when the file is missing or unreadable."""
+    try:
+        doc = json.loads((out_dir / "mohr_coulomb.json").read_text())
+    except (OSError, ValueError):
+        return None
+    if not isinstance(doc, dict):
+        return None
+    by_folder = {str(r.dir.resolve()): r for r in runs}
+    entries = [e for e in doc.get("runs", []) if isinstance(e, dict) and e.get("folder") in by_folder]
     out = {}
-    for env, key, _, _ in ENVELOPES:
-        circles = [(r, *st) for r in runs for st in [mohr_state(r, key)] if st is not None]
-        fit = mohr_coulomb_fit([(0.5 * (s1 + s3), 0.5 * (s1 - s3)) for _, s1, s3 in circles])
-        out[env] = {"circles": circles, "fit": fit, "left_out": [r.name for r in runs if all(c[0] is not r for c in circles)]}
+    for env, _, _, _ in ENVELOPES:
+        circles = [(by_folder[e["folder"]], num(get(e, env, "sigma1_Pa")), num(get(e, env, "sigma3_Pa")))
+                   for e in entries if isinstance(e.get(env), dict)]
+        circles = [c for c in circles if c[1] is not None and c[2] is not None]
+        fit = doc.get(env) if isinstance(doc.get(env), dict) else {}
+        if num(fit.get("phi_deg")) is None:
+            fit = {"refused": str(fit.get("refused", "not in mohr_coulomb.json"))}
+        out[env] = {"circles": circles, "fit": fit,
+                    "left_out": [r.name for r in runs if all(c[0] is not r for c in circles)]}
     return out
 
 
@@ -1499,7 +1498,9 @@ def fig_mohr_circles(runs, mohr, out_dir):
                "envelopes &tau; = c' + &sigma;' tan &phi;' fitted over the runs (least squares of t = "
                "(&sigma;<sub>1</sub> &minus; &sigma;<sub>3</sub>)/2 on s' = (&sigma;<sub>1</sub> + "
                "&sigma;<sub>3</sub>)/2, t = c' cos &phi;' + s' sin &phi;'); small dots: where each circle touches "
-               "its fitted envelope.")
+               "its fitted envelope; all from mohr_coulomb.json, which grainlab report writes.")
+    if mohr is None:
+        return f.missing(*MOHR_MISSING)
     if not mohr["peak"]["circles"] and not mohr["critical_state"]["circles"]:
         return f.missing("run.json triaxial.peak_stress_ratio, critical_stress_ratio or "
                          "config.consolidation.normal_stress", "in every run")
@@ -1565,6 +1566,8 @@ def grid_html(head, rows, caption):
 def mohr_fit_table(runs, mohr):
     head = ["envelope", "&phi;' fitted (deg)", "c' fitted (kPa)", "R<sup>2</sup>", "rms residual of t (kPa)",
             "runs", "&phi;' of each run alone, c' = 0 (deg, run.json)"]
+    if mohr is None:
+        return f'<div class="note">not available: {html.escape(" missing (".join(MOHR_MISSING))})</div>'
     rows = []
     for env, _, angle, what in ENVELOPES:
         fit = mohr[env]["fit"]
@@ -1579,7 +1582,7 @@ def mohr_fit_table(runs, mohr):
     notes = "".join(f'<div class="note">no {what} envelope: {html.escape(mohr[env]["fit"]["refused"])}</div>'
                     for env, _, _, what in ENVELOPES if "refused" in mohr[env]["fit"])
     return grid_html(head, rows, "Mohr-Coulomb envelopes &tau; = c' + &sigma;' tan &phi;' fitted over the runs "
-                                 "(least squares of t on s'; also in mohr_coulomb.json), beside each run's own angle "
+                                 "(least squares of t on s', from mohr_coulomb.json), beside each run's own angle "
                                  "(in the order of the table below)") + notes
 
 
@@ -1602,49 +1605,16 @@ def triaxial_comparison_table(runs, out_dir):
                                  "c' = 0; a run's name links to its own report when it has one)")
 
 
-def write_mohr_json(runs, mohr, out_dir):
-    """mohr_coulomb.json next to index.html: the fits and each run's circles, SI units."""
-    def fit_json(env):
-        fit = dict(mohr[env]["fit"])
-        if "refused" in fit:
-            return {"phi_deg": None, "c_Pa": None, "refused": fit["refused"]}
-        return fit
-    doc = {
-        "what": "Mohr-Coulomb envelopes tau = c' + sigma' tan(phi') fitted over drained triaxial runs: least "
-                "squares of t = (sigma_1 - sigma_3)/2 on s' = (sigma_1 + sigma_3)/2, t = a + s' sin(phi'), "
-                "c' = a / cos(phi')",
-        "source": "run.json: config.consolidation.normal_stress as sigma_3; triaxial.peak_stress_ratio and "
-                  "critical_stress_ratio as eta, sigma_1 = sigma_3 (3 + 2 eta) / (3 - eta)",
-        "peak": fit_json("peak"),
-        "critical_state": fit_json("critical_state"),
-        "runs": [],
-    }
-    for r in runs:
-        entry = {"name": r.name, "folder": str(r.dir.resolve()), "sigma3_Pa": triaxial_sigma3(r)}
-        for env, key, angle, _ in ENVELOPES:
-            st = mohr_state(r, key)
-            entry[env] = None if st is None else {
-                "stress_ratio": num(get(r.info, "triaxial", key)), "sigma1_Pa": st[0], "sigma3_Pa": st[1],
-                "s_Pa": 0.5 * (st[0] + st[1]), "t_Pa": 0.5 * (st[0] - st[1]),
-                "friction_angle_deg": num(get(r.info, "triaxial", angle))}
-        doc["runs"].append(entry)
-    path = out_dir / "mohr_coulomb.json"
-    tmp = out_dir / ".mohr_coulomb.json.tmp"
-    tmp.write_text(json.dumps(doc, indent=2) + "\n")
-    os.replace(tmp, path)
-    return path
-
-
 def triaxial_comparison_report(runs, out_dir):
     runs = sorted(runs, key=lambda r: (triaxial_sigma3(r) is None, triaxial_sigma3(r) or 0.0))
-    prepare_out(out_dir, COMPARISON_OUTPUTS)
-    mohr = triaxial_mohr(runs)
+    prepare_out(out_dir, COMPARISON_PNGS + TRIAXIAL_COMPARISON_PNGS)  # mohr_coulomb.json is grainlab report's
+    mohr = read_mohr(runs, out_dir)
     figs = [fig_triaxial_overlay(runs, out_dir), fig_stress_paths(runs, out_dir), fig_mohr_circles(runs, mohr, out_dir)]
-    write_mohr_json(runs, mohr, out_dir)
     subtitle = (f"{len(runs)} drained triaxial runs, by cell pressure: " + ", ".join(
         f"<code>{html.escape(r.name)}</code> ({esc(r.preset)}, &sigma;<sub>3</sub> = "
         f"{fmt(1e-3 * (triaxial_sigma3(r) or float('nan')), '.4g', 'kPa')})" for r in runs) +
-        '. The fitted envelopes are also written to <a href="mohr_coulomb.json">mohr_coulomb.json</a>.')
+        ('. The fitted envelopes are in <a href="mohr_coulomb.json">mohr_coulomb.json</a>.' if mohr is not None
+         else "."))
     blocks = ["<h2>Mohr-Coulomb strength parameters</h2>", mohr_fit_table(runs, mohr),
               "<h2>Runs</h2>", triaxial_comparison_table(runs, out_dir), "<h2>Figures</h2>"]
     blocks += [figure_html(f) for f in figs]
@@ -1652,11 +1622,59 @@ def triaxial_comparison_report(runs, out_dir):
 
 
 
+# ---------------------------------------------------------------------------
+# A lab test this script has no figures of: every series column against the
+# test's progress column, and run.json's numbers of the test's own group.
+
+def fig_series(run, out_dir):
+    x_name = run.progress_column
+    cols = [c for c in run.series if c not in (x_name, "time_s") and run.col(c) is not None]
+    f = Figure(f"Every series column against {x_name}", "series.csv",
+               f"Each column of series.csv that has a number against the test's progress column {html.escape(x_name)}, "
+               "in the engine's units (SI; the column names carry them).")
+    if not cols:
+        return f.missing(f"series.csv columns besides {x_name} and time_s")
+    ncols = min(3, len(cols))
+    nrows = (len(cols) + ncols - 1) // ncols
+    fig, axes = plt.subplots(nrows, ncols, figsize=(4.2 * ncols, 2.8 * nrows), squeeze=False, sharex=True)
+    for ax, c in zip(axes.flat, cols):
+        ax.plot(run.series[x_name], run.series[c], color=ALL_COLOR, lw=1.2)
+        ax.set_title(c, fontsize=9)
+    for ax in axes.flat[len(cols):]:
+        ax.set_visible(False)
+    for ax in axes[-1]:
+        ax.set_xlabel(x_name)
+    fig.tight_layout()
+    return f.save(fig, out_dir, "series.png")
+
+
+def generic_report(run, out_dir):
+    prepare_out(out_dir, SINGLE_PNGS)
+    figs = [fig_series(run, out_dir)]
+    group = get(run.info, run.test, default={})
+    own = [(html.escape(k), fmt(v, ".4g")) for k, v in group.items() if num(v) is not None] if isinstance(group, dict) else []
+    results = own + preparation_rows(run) + [
+        ("wall time", fmt_duration(get(run.info, "timings", "wall_s"))),
+        ("rows in series.csv", str(len(run.series[run.progress_column]))),
+    ]
+    subtitle = (f"{html.escape(run.test)} run <code>{html.escape(run.name)}</code> (folder <code>"
+                f"{html.escape(str(run.dir.resolve()))}</code>): grain class {esc(run.preset)}, sand preset "
+                f"{esc(run.sand)}, {esc(get(run.info, 'grains'))} grains. This report has no figures of its own "
+                f"for the test {html.escape(run.test)}: it draws every series column against {html.escape(run.progress_column)}.")
+    blocks = ['<h2>Inputs and results</h2>\n<div class="tables">', table_html(inputs_rows(run), "Inputs (run.json)"),
+              table_html(results, f"Results (run.json {html.escape(run.test)} and preparation)"), "</div>",
+              "<h2>Figures</h2>"]
+    blocks += [figure_html(f) for f in figs]
+    return write_page(out_dir, f"grainlab {run.test} report: {run.name}", subtitle, blocks), figs
+
+
 def single_report(run, out_dir):
     if run.test == "oedometer":
         return oedometer_report(run, out_dir)
     if run.test == "triaxial":
         return triaxial_report(run, out_dir)
+    if run.test not in PROGRESS_COLUMNS:
+        return generic_report(run, out_dir)
     prepare_out(out_dir, SINGLE_PNGS)
     figs = [fn(run, out_dir) for fn in (fig_stress_ratio, fig_vertical_displacement, fig_displacement_profile,
                                         fig_rotation, fig_coordination, fig_rose, fig_fabric_psi, fig_force_chains)]

@@ -67,8 +67,8 @@ class Sand:
         self.seed = int(entry.get("seed", FIRST_SEED))
         self.run.label = self.name if self.seed == FIRST_SEED else f"{self.name} seed {self.seed}"
         self.R = rp.num(self.run.info.get("mean_roundness"))
-        self.phi_p, self.strain_at_peak = self.run.peak_friction()
-        self.psi_p, _ = self.run.peak_dilation()
+        self.phi_p, self.strain_at_peak, _ = self.run.peak_friction()
+        self.psi_p, _, _ = self.run.peak_dilation()
         self.rotation = value_at(self.run, "rotation_mean_deg")
         self.cn = value_at(self.run, "coordination_number")
         self.psi_fabric = self.run.peak_psi()

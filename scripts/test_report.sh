@@ -1,13 +1,16 @@
 #!/usr/bin/env bash
 # Tests scripts/report.py on fabricated run folders (scripts/make_fake_run.py).
 # Exits non-zero on the first failure. Needs Debian's python3 with matplotlib
-# and numpy (override with PY=/path/to/python3).
+# and numpy (override with PY=/path/to/python3), and for the triaxial
+# comparison, whose Mohr-Coulomb fit the engine writes, the grainlab binary
+# (GRAINLAB=/path/to/grainlab; ctest sets it; default build/grainlab).
 #
 #   bash scripts/test_report.sh
 set -euo pipefail
 
 here="$(cd "$(dirname "$0")" && pwd)"
 PY="${PY:-/usr/bin/python3}"
+GRAINLAB="${GRAINLAB:-$here/../build/grainlab}"
 tmp="$(mktemp -d "${TMPDIR:-/tmp}/test_report.XXXXXX")"
 trap 'rm -rf "$tmp"' EXIT
 
@@ -68,6 +71,27 @@ done
 grep -q "peak friction angle" "$tmp/runs/angular/report/index.html" || fail "no table of peaks"
 pass "single-run report: index.html and its 8 PNGs"
 
+# Both void ratios are shown, and D_r says which one (and which e_min/e_max) it is on.
+page="$tmp/runs/angular/report/index.html"
+grep -q "void ratio after preparation, whole specimen e" "$page" || fail "no whole-specimen void ratio row"
+grep -q "void ratio after preparation, bulk e (away from the walls)" "$page" || fail "no bulk void ratio row"
+grep -q "relative density D<sub>r</sub>, on the whole specimen e</th><td>[0-9.]* % (the lab&#x27;s\|relative density D<sub>r</sub>, on the whole specimen e</th><td>[0-9.]* % (the lab's" "$page" \
+  || fail "D_r on the lab's indices does not say it is on the whole specimen e"
+cp -r "$tmp/runs/angular" "$tmp/runs/own"
+rm -rf "$tmp/runs/own/report"
+"$PY" - "$tmp/runs/own/run.json" <<'PYEOF'
+import json, sys
+p = sys.argv[1]
+j = json.load(open(p))
+j["preparation"].update({"void_ratio": 0.5292, "bulk_void_ratio": 0.432, "relative_density": 0.922,
+                         "relative_density_own": 0.922, "own_e_min": 0.41, "own_e_max": 0.67})
+json.dump(j, open(p, "w"))
+PYEOF
+"$PY" "$here/report.py" "$tmp/runs/own" >/dev/null || fail "report.py failed on a run prepared on its own indices"
+grep -q "on the bulk e</th><td>92.2 % (the grains&#x27; own e<sub>min</sub> / e<sub>max</sub> 0.410 / 0.670)\|on the bulk e</th><td>92.2 % (the grains' own e<sub>min</sub> / e<sub>max</sub> 0.410 / 0.670)" \
+  "$tmp/runs/own/report/index.html" || fail "D_r on the own indices does not say it is on the bulk e"
+pass "results table: whole and bulk void ratios, and the one D_r is on"
+
 # --- both runs: comparison in the first run's sibling folder -----------------------
 "$PY" "$here/report.py" "$tmp/runs/angular" "$tmp/runs/beads" >/dev/null || fail "comparison report failed"
 check_report "$tmp/runs/comparison/report" "${comparison_pngs[@]}"
@@ -88,9 +112,9 @@ grep -q "not available: run.json mean_roundness missing" "$tmp/cmp0/index.html" 
 pass "--out, and the roundness scatter skipped with a note"
 
 # --- the report reads the engine's numbers and derives none ------------------------
-# No fitting, tensors, eigenvalues or histograms in report.py: those are src/analysis/'s. (The one
-# exception, the Mohr-Coulomb envelope over several triaxial runs, is a closed-form least squares.)
-if grep -nE "einsum|polyfit|eigvalsh|linalg|histogram2d|arctan2|def (kanatani|octahedral|dilation_angle|rose_histogram)" \
+# No fitting, peak finding, tensors, eigenvalues or histograms in report.py: those are src/analysis/'s
+# (the Mohr-Coulomb fit over several triaxial runs too: grainlab report writes mohr_coulomb.json).
+if grep -nE "einsum|polyfit|eigvalsh|linalg|histogram2d|arctan2|argmax|asin|def (kanatani|octahedral|dilation_angle|rose_histogram|pick_peak|mohr_coulomb_fit)" \
     "$here/report.py"; then
   fail "report.py derives a number the engine computes (the lines above)"
 fi
@@ -206,8 +230,14 @@ if grep -q "not available" "$tmp/tx/s100/report/index.html"; then fail "a comple
 grep -q "grainlab triaxial report" "$tmp/tx/s100/report/index.html" || fail "the triaxial run got another test's report"
 pass "single triaxial run: index.html with triaxial_curves.png and stress_path.png"
 
+# The comparison by grainlab report, which fits the envelopes (mohr_coulomb.json) and runs this report.py.
+[ -x "$GRAINLAB" ] || fail "no grainlab binary at $GRAINLAB (build it, or set GRAINLAB=/path/to/grainlab)"
+export GRAINLAB_PYTHON="$PY"
+report_py_of_binary="$("$GRAINLAB" report --print-script)"
+[ "$report_py_of_binary" = "$(cat "$here/report.py")" ] \
+  || fail "$GRAINLAB embeds another report.py than $here/report.py: rebuild it"
 # Given out of order: the page sorts them by sigma_3.
-out="$("$PY" "$here/report.py" "$tmp/tx/s200" "$tmp/tx/s50" "$tmp/tx/s100")" || fail "triaxial comparison failed: $out"
+out="$("$GRAINLAB" report "$tmp/tx/s200" "$tmp/tx/s50" "$tmp/tx/s100")" || fail "triaxial comparison failed: $out"
 cmp_dir="$tmp/tx/comparison/report"
 check_report "$cmp_dir" triaxial_overlay.png stress_paths.png mohr_circles.png
 for png in stress_strain_overlay.png peaks_vs_roundness.png; do
@@ -237,14 +267,14 @@ grep -q "$phi100" "$cmp_dir/index.html" || fail "the page lacks the 100 kPa run'
 pass "triaxial comparison: Mohr circles, phi' and c' recovered within 0.1 deg and 0.1 kPa (mohr_coulomb.json and page)"
 
 # The same run twice: one sigma_3, so no envelope; the page says why.
-"$PY" "$here/report.py" "$tmp/tx/s100" "$tmp/tx/s100" --out "$tmp/tx/same" >/dev/null || fail "comparison of one run twice failed"
+"$GRAINLAB" report "$tmp/tx/s100" "$tmp/tx/s100" --out "$tmp/tx/same" >/dev/null || fail "comparison of one run twice failed"
 grep -q "no peak envelope: every circle has the same centre" "$tmp/tx/same/index.html" || fail "a fit on one sigma_3 is not refused"
 "$PY" -c 'import json,sys; assert json.load(open(sys.argv[1]))["peak"]["phi_deg"] is None' "$tmp/tx/same/mohr_coulomb.json" \
   || fail "mohr_coulomb.json gives a phi' from one sigma_3"
 pass "one sigma_3 twice: the fit refused with a note"
 
 set +e
-msg="$("$PY" "$here/report.py" "$tmp/tx/s100" "$tmp/runs/angular" --out "$tmp/tx/mixed" 2>&1 >/dev/null)"; rc=$?
+msg="$("$GRAINLAB" report "$tmp/tx/s100" "$tmp/runs/angular" --out "$tmp/tx/mixed" 2>&1 >/dev/null)"; rc=$?
 set -e
 [ "$rc" -ne 0 ] || fail "report.py compared a triaxial and a direct shear run"
 [ "$(printf '%s\n' "$msg" | wc -l)" -eq 1 ] || fail "the refusal is not one line: $msg"
@@ -252,6 +282,32 @@ grep -q "s100: triaxial" <<<"$msg" && grep -q "angular: direct-shear" <<<"$msg" 
   || fail "the refusal does not say which run is which test: $msg"
 [ ! -e "$tmp/tx/mixed" ] || fail "a refused comparison wrote its folder"
 pass "refuses a triaxial + direct shear comparison: $msg"
+
+# report.py alone on triaxial runs has no fit to draw, and says where it comes from.
+"$PY" "$here/report.py" "$tmp/tx/s50" "$tmp/tx/s100" --out "$tmp/tx/nofit" >/dev/null || fail "report.py alone failed"
+grep -q "not available: mohr_coulomb.json missing (grainlab report fits" "$tmp/tx/nofit/index.html" \
+  || fail "report.py alone does not say that grainlab report writes the fit"
+[ ! -e "$tmp/tx/nofit/mohr_circles.png" ] || fail "report.py drew Mohr circles without the engine's fit"
+pass "report.py alone on triaxial runs: no fit of its own, a note instead"
+
+# --- a lab test the report has no figures of: every series column against the progress column
+cp -r "$tmp/tx/s100" "$tmp/tx/newtest"
+rm -rf "$tmp/tx/newtest/report"
+"$PY" - "$tmp/tx/newtest/run.json" <<'PYEOF'
+import json, sys
+p = sys.argv[1]
+j = json.load(open(p))
+j["config"]["test"] = "ring-shear"
+j["ring-shear"] = j.pop("triaxial")
+json.dump(j, open(p, "w"))
+PYEOF
+"$PY" "$here/report.py" "$tmp/tx/newtest" >/dev/null || fail "report.py failed on a test it does not know"
+check_report "$tmp/tx/newtest/report" series.png
+grep -q "grainlab ring-shear report" "$tmp/tx/newtest/report/index.html" || fail "the unknown test's page lacks its name"
+grep -q "against axial_strain" "$tmp/tx/newtest/report/index.html" || fail "the unknown test's columns are not against its progress"
+grep -q "<th>peak_stress_ratio</th>" "$tmp/tx/newtest/report/index.html" || fail "the unknown test's own run.json group is not shown"
+[ "$(ls "$tmp/tx/newtest/report"/*.png | wc -l)" -eq 1 ] || fail "the unknown test got figures of a known test"
+pass "a test report.py does not know: every series column against its progress column (series.png)"
 
 # The four-sand study report (scripts/study_report.py) on fabricated runs: a
 # study.json naming four sand runs and three damping runs.

@@ -31,13 +31,6 @@ std::optional<double> mean_grain_roundness(const Model& model) {
   return sum / static_cast<double>(model.bodies.size());
 }
 
-std::optional<double> series_peak(std::span<const double> values) {
-  std::optional<double> peak;
-  for (double v : values)
-    if (std::isfinite(v) && (!peak || v > *peak)) peak = v;
-  return peak;
-}
-
 MicromechanicsSummary micromechanics_summary(const Model& model, const State& state, double specimen_volume,
                                              std::span<const double> fabric_psi,
                                              std::span<const double> fabric_psi_band) {

@@ -5,13 +5,14 @@
 //    (measured on one core: 24 shapes of 500 faces, 0.03 s angular to 0.08 s
 //    sub-angular), so it is computed at the end of every run;
 //  * the peaks of the fabric factor Psi over the recorded series (largest
-//    finite value; NaN rows, before a contact exists, are skipped);
+//    finite value, peak.h; NaN rows, before a contact exists, are skipped);
 //  * the normal contact force statistics of the final contacts (force_stats.h);
 //  * the Love-Weber stress of the final contacts (stress.h, wall contacts
 //    included) over the specimen volume V = box length x box width x cap height.
 #pragma once
 
 #include "analysis/force_stats.h"
+#include "analysis/peak.h"
 #include "analysis/stress.h"
 #include "dynamics/model.h"
 #include "dynamics/state.h"
@@ -24,9 +25,6 @@ namespace grainlab::analysis {
 // Mean Wadell roundness over the grains (rules above); nullopt when there are
 // no grains or a shape cannot be measured.
 std::optional<double> mean_grain_roundness(const Model& model);
-
-// Largest finite value of a series; nullopt when there is none.
-std::optional<double> series_peak(std::span<const double> values);
 
 struct MicromechanicsSummary {
   std::optional<double> mean_roundness;

@@ -2,9 +2,12 @@
 // run, or a comparison of several, by scripts/report.py. The script is
 // compiled into the binary (cmake/embed_text.cmake), written to a temporary
 // folder and run with a Python that has matplotlib and numpy (report.h).
+// Several triaxial runs first get their Mohr-Coulomb fit written next to
+// the comparison (io/mohr_coulomb_file.h), which the script draws.
 #include "apps/commands.h"
 #include "apps/report.h"
 #include "core/error.h"
+#include "io/mohr_coulomb_file.h"
 
 #include <fmt/format.h>
 
@@ -123,7 +126,15 @@ int run_report(const std::vector<std::string>& run_dirs, const std::string& out)
   }
   std::vector<std::string> args = {*python, script.string()};
   args.insert(args.end(), run_dirs.begin(), run_dirs.end());
-  if (!out.empty()) args.insert(args.end(), {"--out", out});
+  std::string out_dir = out;
+  const std::vector<std::filesystem::path> folders(run_dirs.begin(), run_dirs.end());
+  if (is_triaxial_comparison(folders)) {
+    // The script's default folder for a comparison: RUN_A/../comparison/report.
+    if (out_dir.empty())
+      out_dir = (std::filesystem::canonical(folders.front()).parent_path() / "comparison" / "report").string();
+    write_mohr_coulomb_file(folders, out_dir);
+  }
+  if (!out_dir.empty()) args.insert(args.end(), {"--out", out_dir});
   const int rc = spawn_and_wait(args, false);
   if (rc < 0) throw RunError(fmt::format("could not start '{}' to run the report", *python));
   return rc;

@@ -86,6 +86,7 @@ void write_run_json(const LabTest& test, const std::filesystem::path& out, doubl
   }
   j["timings"]["threads"] = threads;
   add_micromechanics_summary(j, test);
+  add_peak_verdicts(j, test);
   j["specimen_preparation"] = preparation;
   write_json_file(out / "run.json", j);
 }

@@ -2,6 +2,7 @@
 #include "io/run_summary.h"
 
 #include "analysis/micromechanics.h"
+#include "analysis/peak.h"
 
 namespace grainlab {
 
@@ -38,6 +39,17 @@ void add_micromechanics_summary(nlohmann::json& j, const LabTest& test) {
   f["contact_force_max_N"] = m.forces.max;
   f["contact_force_std_N"] = m.forces.std_dev;
   f["strong_contact_fraction"] = m.forces.strong_fraction;
+}
+
+void add_peak_verdicts(nlohmann::json& j, const LabTest& test) {
+  const std::optional<double> end = analysis::series_peak(series_column(test, "shear_strain"));
+  if (!end || !j.contains("peaks")) return;
+  nlohmann::json& peaks = j["peaks"];
+  for (const char* what : {"friction", "dilation"}) {
+    const std::string at = std::string("strain_at_peak_") + what;
+    if (peaks.contains(at) && peaks[at].is_number())
+      peaks[std::string(what) + "_is_peak"] = analysis::is_peak_at(peaks[at].get<double>(), *end);
+  }
 }
 
 }  // namespace grainlab

@@ -5,7 +5,7 @@
 #include "core/error.h"
 #include "core/parallel.h"
 #include "geometry/primitives.h"
-#include "io/vtk_reader.h"
+#include "io/pvd_reader.h"
 
 #include <fmt/format.h>
 

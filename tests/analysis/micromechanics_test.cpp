@@ -12,14 +12,6 @@
 using namespace grainlab;
 using namespace grainlab::analysis;
 
-TEST(SeriesPeak, LargestFiniteValue) {
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  EXPECT_EQ(series_peak(std::vector<double>{nan, 0.1, 0.3, nan, 0.2}), 0.3);
-  EXPECT_EQ(series_peak(std::vector<double>{-2.0, -1.0}), -1.0);
-  EXPECT_FALSE(series_peak(std::vector<double>{nan, nan}).has_value());
-  EXPECT_FALSE(series_peak({}).has_value());
-}
-
 TEST(MicromechanicsSummary, SpheresAreRoundAndTheStressIsOverTheBoxVolume) {
   // Two unit-spaced spheres pressed together along z by 10 N: sigma_zz = F l / V.
   Model model;

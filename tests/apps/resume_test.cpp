@@ -3,7 +3,7 @@
 // included) is the same, byte for byte, as that of a run that was never
 // interrupted, and its ParaView collections list the same snapshots. A run
 // whose report cannot be written (no Python with matplotlib) still succeeds.
-#include "io/vtk_reader.h"
+#include "io/pvd_reader.h"
 
 #include <gtest/gtest.h>
 

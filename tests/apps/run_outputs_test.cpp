@@ -5,8 +5,9 @@
 // run.json's micromechanics entries, and report/index.html with every figure
 // the report promised. Also `grainlab report` on its own.
 #include "io/json.h"
+#include "io/pvd_reader.h"
 #include "io/table.h"
-#include "io/vtk_reader.h"
+#include "io/vtp_reader.h"
 
 #include <gtest/gtest.h>
 
@@ -300,14 +301,19 @@ TEST(RunOutputs, ReportCommandWorksFromAnyFolderWithOut) {
 }
 
 // A largest F/N in the last 5 % of the test's strain is not called a peak:
-// the tiny run's report says so exactly when its peak strain is there, and a
-// copy whose run.json puts it at the final strain says so.
+// run.json says whether the tiny run's is one (analysis/peak.h's rule on its
+// peak strain), its report says "no peak" exactly when run.json does, and a
+// copy whose run.json puts the peak at the final strain, judged no peak,
+// says so.
 TEST(RunOutputs, ReportCallsNoPeakALargestValueAtTheEnd) {
   REQUIRE_RUN(r);
   const std::string no_peak = "no peak: F/N is largest at the end of the test";
   const nlohmann::json run = grainlab::read_json_file(r.out / "run.json");
   const double final_strain = 0.02, at = run["peaks"]["strain_at_peak_friction"].get<double>();
-  const bool at_end = at >= 0.95 * final_strain - 1e-9;
+  ASSERT_TRUE(run["peaks"].contains("friction_is_peak")) << run["peaks"].dump();
+  ASSERT_TRUE(run["peaks"].contains("dilation_is_peak")) << run["peaks"].dump();
+  const bool at_end = !run["peaks"]["friction_is_peak"].get<bool>();
+  EXPECT_EQ(at_end, at >= 0.95 * final_strain - 1e-9) << "peak strain " << at;
   EXPECT_EQ(read_file(r.out / "report" / "index.html").find(no_peak) != std::string::npos, at_end)
       << "peak strain " << at;
 
@@ -316,6 +322,7 @@ TEST(RunOutputs, ReportCallsNoPeakALargestValueAtTheEnd) {
   fs::copy(r.out, copy, fs::copy_options::recursive);
   nlohmann::json edited = run;
   edited["peaks"]["strain_at_peak_friction"] = final_strain;
+  edited["peaks"]["friction_is_peak"] = false;
   std::ofstream(copy / "run.json") << edited.dump(1);
   const Result rep = run_grainlab("/", "report '" + copy.string() + "'");
   ASSERT_EQ(rep.exit_code, 0) << rep.output;

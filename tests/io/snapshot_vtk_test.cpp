@@ -7,7 +7,8 @@
 #include "dynamics/world.h"
 #include "geometry/primitives.h"
 #include "core/atomic_file.h"
-#include "io/vtk_reader.h"
+#include "io/pvd_reader.h"
+#include "io/vtp_reader.h"
 #include "io_test_helpers.h"
 #include "vtk_test_helpers.h"
 

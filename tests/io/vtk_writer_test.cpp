@@ -3,12 +3,13 @@
 // and the values in one base64 stream; compressed: VTK's zlib blocks in a raw
 // appended section, decoded here with zlib directly), damaged files refused,
 // inconsistent data refused, and the collection valid after every addition.
-#include "io/vtk_reader.h"
 #include "io/vtk_writer.h"
 
 #include "core/error.h"
 #include "core/atomic_file.h"
 #include "io/base64.h"
+#include "io/pvd_reader.h"
+#include "io/vtp_reader.h"
 #include "io_test_helpers.h"
 #include "vtk_test_helpers.h"
 

@@ -1,200 +1,47 @@
-// A minimal XML reader for grainlab's own .vtp and .pvd files (see vtk_reader.h).
+// Test helper: reads back the .vtp files that io/vtk_writer.h writes, so the
+// tests can check what a run wrote (only tests read .vtp files; the engine
+// reads .pvd collections only, io/pvd_reader.h). Header-only: test_io and
+// test_apps both include it.
 //
-// The scanner walks the tags in order and keeps a stack of open elements. An
+// The tags come from io/xml_scanner.h, with a stack of open elements. An
 // inline DataArray's text is taken whole up to its closing tag and decoded:
 // the byte count as a UInt32 or UInt64 (the VTKFile's header_type), then the
 // values, little-endian; base64 of the two together (as grainlab and VTK
 // write), or of each apart (as some other writers do). An appended DataArray
 // is read at its offset in the raw <AppendedData> bytes: VTK's zlib blocks
 // (compressor="vtkZLibDataCompressor", io/zlib_blocks.h) or a byte count and
-// the values.
-#include "io/vtk_reader.h"
+// the values. Not a general VTK reader: no ascii data, no base64 appended
+// data, no compressed inline data, no triangle strips.
+#pragma once
 
 #include "core/error.h"
 #include "io/base64.h"
+#include "io/vtk_writer.h"
+#include "io/xml_scanner.h"
 #include "io/zlib_blocks.h"
 
-#include <algorithm>
-#include <charconv>
+#include <cstdint>
 #include <cstring>
-#include <fstream>
-#include <map>
-#include <sstream>
+#include <filesystem>
 #include <stdexcept>
+#include <string>
+#include <string_view>
 #include <type_traits>
+#include <vector>
 
 namespace grainlab {
 
-namespace {
+namespace vtp_detail {
 
-using Attributes = std::map<std::string, std::string, std::less<>>;
-
-std::string read_text(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) input_error("cannot open '{}': check that the file exists and is readable", path.string());
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-bool is_space(char c) { return c == ' ' || c == '\n' || c == '\r' || c == '\t'; }
-bool is_name_char(char c) {
-  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' || c == ':' ||
-         c == '-' || c == '.';
-}
-
-// One tag: <name attrs>, <name attrs/> or </name>.
-struct Tag {
-  std::string name;
-  Attributes attributes;
-  bool closing = false;       // </name>
-  bool self_closing = false;  // <name/>
-};
-
-// Walks the tags of an XML text, skipping the declaration and comments.
-class XmlScanner {
- public:
-  XmlScanner(std::string_view text, const std::string& source) : text_(text), source_(source) {}
-
-  // The next tag, or false at the end of the text. Text between tags is skipped.
-  bool next(Tag& tag) {
-    for (;;) {
-      const std::size_t lt = text_.find('<', pos_);
-      if (lt == std::string_view::npos) return false;
-      pos_ = lt;
-      if (starts_with("<?")) {
-        skip_past("?>");
-      } else if (starts_with("<!--")) {
-        skip_past("-->");
-      } else {
-        break;
-      }
-    }
-    ++pos_;
-    tag = Tag{};
-    if (pos_ < text_.size() && text_[pos_] == '/') {
-      tag.closing = true;
-      ++pos_;
-    }
-    tag.name = read_name("an element name");
-    for (;;) {
-      skip_spaces();
-      if (pos_ >= text_.size()) fail("the file ends inside the <{}> tag", tag.name);
-      if (text_[pos_] == '>') {
-        ++pos_;
-        return true;
-      }
-      if (!tag.closing && starts_with("/>")) {
-        pos_ += 2;
-        tag.self_closing = true;
-        return true;
-      }
-      if (tag.closing) fail("unexpected '{}' in the closing tag </{}>", text_[pos_], tag.name);
-      std::string key = read_name("an attribute name");
-      skip_spaces();
-      expect('=', key);
-      skip_spaces();
-      if (pos_ >= text_.size() || (text_[pos_] != '"' && text_[pos_] != '\''))
-        fail("attribute '{}' of <{}> has no quoted value", key, tag.name);
-      const char quote = text_[pos_++];
-      const std::size_t end = text_.find(quote, pos_);
-      if (end == std::string_view::npos) fail("attribute '{}' of <{}> is not closed", key, tag.name);
-      std::string value = unescape(text_.substr(pos_, end - pos_));
-      pos_ = end + 1;
-      if (!tag.attributes.emplace(std::move(key), std::move(value)).second)
-        fail("<{}> repeats an attribute", tag.name);
-    }
-  }
-
-  // The text up to the closing tag </name>, which is consumed.
-  std::string_view content_until_close(std::string_view name) {
-    const std::string close = "</" + std::string(name) + ">";
-    const std::size_t end = text_.find(close, pos_);
-    if (end == std::string_view::npos) fail("<{}> is never closed", name);
-    const std::string_view content = text_.substr(pos_, end - pos_);
-    pos_ = end + close.size();
-    return content;
-  }
-
-  // Throws InputError naming the source and the line of the current position.
-  template <typename... Args>
-  [[noreturn]] void fail(fmt::format_string<Args...> f, Args&&... args) const {
-    const std::size_t line = 1 + std::count(text_.begin(), text_.begin() + std::min(pos_, text_.size()), '\n');
-    input_error("{}, line {}: {}. The file is not a VTK file written by grainlab, or it is damaged", source_, line,
-                fmt::format(f, std::forward<Args>(args)...));
-  }
-
- private:
-  bool starts_with(std::string_view s) const { return text_.substr(pos_, s.size()) == s; }
-  void skip_past(std::string_view s) {
-    const std::size_t end = text_.find(s, pos_);
-    if (end == std::string_view::npos) fail("'{}' is never closed", text_.substr(pos_, 4));
-    pos_ = end + s.size();
-  }
-  void skip_spaces() {
-    while (pos_ < text_.size() && is_space(text_[pos_])) ++pos_;
-  }
-  void expect(char c, const std::string& after) {
-    if (pos_ >= text_.size() || text_[pos_] != c) fail("expected '{}' after '{}'", c, after);
-    ++pos_;
-  }
-  std::string read_name(const char* what) {
-    const std::size_t start = pos_;
-    while (pos_ < text_.size() && is_name_char(text_[pos_])) ++pos_;
-    if (pos_ == start) fail("expected {}", what);
-    return std::string(text_.substr(start, pos_ - start));
-  }
-  std::string unescape(std::string_view s) const {
-    std::string out;
-    for (std::size_t i = 0; i < s.size(); ++i) {
-      if (s[i] != '&') {
-        out += s[i];
-        continue;
-      }
-      static constexpr std::pair<std::string_view, char> kEntities[] = {
-          {"&amp;", '&'}, {"&lt;", '<'}, {"&gt;", '>'}, {"&quot;", '"'}, {"&apos;", '\''}};
-      bool found = false;
-      for (const auto& [entity, c] : kEntities) {
-        if (s.substr(i, entity.size()) == entity) {
-          out += c;
-          i += entity.size() - 1;
-          found = true;
-          break;
-        }
-      }
-      if (!found) fail("unknown entity in '{}'", s);
-    }
-    return out;
-  }
-
-  std::string_view text_;
-  const std::string& source_;
-  std::size_t pos_ = 0;
-};
-
-const std::string* find(const Tag& tag, std::string_view key) {
-  const auto it = tag.attributes.find(key);
-  return it == tag.attributes.end() ? nullptr : &it->second;
-}
-
-// An attribute that must be present.
-const std::string& need(const XmlScanner& xml, const Tag& tag, std::string_view key) {
-  const std::string* v = find(tag, key);
-  if (!v) xml.fail("<{}> has no '{}' attribute", tag.name, key);
-  return *v;
-}
-
-template <typename T>
-T parse_number(const XmlScanner& xml, const Tag& tag, std::string_view key, const std::string& s) {
-  T v{};
-  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
-  if (ec != std::errc() || end != s.data() + s.size())
-    xml.fail("attribute '{}' of <{}> is '{}', not a number", key, tag.name, s);
-  return v;
-}
+using xml::find;
+using xml::is_space;
+using xml::need;
+using xml::parse_number;
+using xml::Tag;
+using XmlScanner = xml::Scanner;
 
 // The bytes of one inline binary DataArray (its header checked and removed).
-std::vector<std::uint8_t> inline_bytes(const XmlScanner& xml, std::string_view content, std::size_t header_size,
+inline std::vector<std::uint8_t> inline_bytes(const XmlScanner& xml, std::string_view content, std::size_t header_size,
                                        const std::string& name) {
   std::string compact;
   compact.reserve(content.size());
@@ -234,7 +81,7 @@ std::vector<std::uint8_t> inline_bytes(const XmlScanner& xml, std::string_view c
 
 // The bytes of one DataArray stored at `offset` of the raw appended section:
 // zlib blocks (compressed files) or a byte count and the values.
-std::vector<std::uint8_t> appended_bytes(const XmlScanner& xml, std::string_view appended, std::size_t offset,
+inline std::vector<std::uint8_t> appended_bytes(const XmlScanner& xml, std::string_view appended, std::size_t offset,
                                          bool compressed, std::size_t header_size, const std::string& name) {
   if (offset > appended.size())
     xml.fail("DataArray '{}' starts at byte {} of the appended data, which holds {}: the file is cut short", name,
@@ -280,7 +127,7 @@ std::vector<T> values_of(const XmlScanner& xml, const std::vector<std::uint8_t>&
   return out;
 }
 
-std::size_t type_size(std::string_view type) {
+inline std::size_t type_size(std::string_view type) {
   if (type == "Float64" || type == "Int64") return 8;
   if (type == "Float32" || type == "Int32") return 4;
   return 0;
@@ -297,12 +144,7 @@ class VtpParser {
     Tag tag;
     bool seen_root = false, seen_piece = false, seen_points = false;
     while (xml_.next(tag)) {
-      if (tag.closing) {
-        if (stack_.empty() || stack_.back() != tag.name)
-          xml_.fail("</{}> does not close the open element <{}>", tag.name, stack_.empty() ? "" : stack_.back());
-        stack_.pop_back();
-        continue;
-      }
+      if (xml_.closes(tag, stack_)) continue;
       if (tag.name == "VTKFile") {
         if (!stack_.empty()) xml_.fail("<VTKFile> inside another element");
         seen_root = true;
@@ -439,13 +281,14 @@ class VtpParser {
   std::size_t n_points_ = 0, n_verts_ = 0, n_lines_ = 0, n_polys_ = 0;
 };
 
-}  // namespace
+}  // namespace vtp_detail
 
-PolyData parse_vtp(std::string_view text, const std::string& source_name) {
+// Parses .vtp text; source_name is used in messages.
+inline PolyData parse_vtp(std::string_view text, const std::string& source_name) {
   // Appended data: XML up to <AppendedData>, then its raw bytes from after an
   // '_' to the closing tag. The XML part is read as if </VTKFile> followed it.
   const std::size_t at = text.find("<AppendedData");
-  if (at == std::string_view::npos) return VtpParser(text, {}, source_name).parse();
+  if (at == std::string_view::npos) return vtp_detail::VtpParser(text, {}, source_name).parse();
   const std::string xml = std::string(text.substr(0, at)) + "</VTKFile>\n";
   const std::size_t open_end = text.find('>', at);
   const std::string_view open = text.substr(at, open_end == std::string_view::npos ? 0 : open_end - at);
@@ -457,46 +300,13 @@ PolyData parse_vtp(std::string_view text, const std::string& source_name) {
                 source_name);
   if (open.find("encoding=\"raw\"") == std::string_view::npos)
     input_error("{}: only raw <AppendedData> is read (the file's is base64 or unstated)", source_name);
-  return VtpParser(xml, text.substr(underscore + 1, close - underscore - 1), source_name).parse();
+  return vtp_detail::VtpParser(xml, text.substr(underscore + 1, close - underscore - 1), source_name).parse();
 }
 
-PolyData read_vtp(const std::filesystem::path& path) { return parse_vtp(read_text(path), path.string()); }
-
-std::vector<PvdEntry> parse_pvd(std::string_view text, const std::string& source_name) {
-  XmlScanner xml(text, source_name);
-  std::vector<PvdEntry> entries;
-  std::vector<std::string> stack;
-  bool seen_root = false, seen_collection = false;
-  Tag tag;
-  while (xml.next(tag)) {
-    if (tag.closing) {
-      if (stack.empty() || stack.back() != tag.name)
-        xml.fail("</{}> does not close the open element <{}>", tag.name, stack.empty() ? "" : stack.back());
-      stack.pop_back();
-      continue;
-    }
-    if (tag.name == "VTKFile") {
-      if (!stack.empty()) xml.fail("<VTKFile> inside another element");
-      if (need(xml, tag, "type") != "Collection") xml.fail("VTKFile type is '{}', not Collection", need(xml, tag, "type"));
-      seen_root = true;
-    } else if (tag.name == "Collection") {
-      if (stack.size() != 1 || stack.back() != "VTKFile") xml.fail("<Collection> outside <VTKFile>");
-      seen_collection = true;
-    } else if (tag.name == "DataSet") {
-      if (stack.empty() || stack.back() != "Collection") xml.fail("<DataSet> outside <Collection>");
-      PvdEntry e;
-      e.time = parse_number<double>(xml, tag, "timestep", need(xml, tag, "timestep"));
-      e.file = need(xml, tag, "file");
-      entries.push_back(std::move(e));
-    }
-    if (!tag.self_closing) stack.push_back(tag.name);
-  }
-  if (!seen_root) xml.fail("no <VTKFile> element");
-  if (!seen_collection) xml.fail("no <Collection> element");
-  if (!stack.empty()) xml.fail("<{}> is never closed", stack.back());
-  return entries;
+// The PolyData of a .vtp file; throws InputError naming the file and what is
+// wrong for a missing, malformed or unsupported file.
+inline PolyData read_vtp(const std::filesystem::path& path) {
+  return parse_vtp(xml::read_text(path), path.string());
 }
-
-std::vector<PvdEntry> read_pvd(const std::filesystem::path& path) { return parse_pvd(read_text(path), path.string()); }
 
 }  // namespace grainlab
