@@ -19,7 +19,7 @@
 #include "io/kept_preparations.h"
 #include "io/preparation_files.h"
 #include "lab/index_densities.h"
-#include "lab/direct_shear.h"
+#include "lab/preparation.h"
 
 #include <fmt/format.h>
 
@@ -50,7 +50,7 @@ int main(int argc, char** argv) {
   const std::string kept = argv[2];
   std::smatch m;
   const std::string name = std::filesystem::path(kept).filename().string();
-  DirectShearSpec prepared = load_config(argv[1]);
+  LabSpec prepared = load_config(argv[1]);
   if (std::regex_match(name, m, std::regex(R"(index_e_(min|max)_seed(\d+)\.bin)"))) {
     prepared = index_preparation_spec(prepared, IndexDensityOptions{}, m[1] == "min", std::stoull(m[2].str()));
   } else if (std::regex_match(name, m, std::regex(R"(trial_friction_([0-9.]+)\.bin)"))) {
@@ -84,11 +84,11 @@ int main(int argc, char** argv) {
                argv[1]);
     return 2;
   }
+  prepared.numerics.threads = threads;  // not part of the key
   std::vector<double> rates;
   for (int r = 0; r < repeat; ++r) {
-    DirectShearTest t(prepared);
+    SpecimenPreparation t(prepared);
     t.accept_any_density();
-    t.world().settings.threads = threads;
     KeptPreparations files(std::filesystem::path(kept).parent_path());
     files.restore(t, stem, prepared);
     if (r == 0)

@@ -55,8 +55,8 @@ double peak_memory_gb() {
   return kb / (1024.0 * 1024.0);
 }
 
-DirectShearSpec paper_spec(int threads, int faces) {
-  DirectShearSpec spec;  // 0.707-0.841 mm, 100 kPa
+LabSpec paper_spec(int threads, int faces) {
+  LabSpec spec;  // 0.707-0.841 mm, 100 kPa
   spec.grains.preset = "sub-angular";  // the paper's Griffin sand (the lab's default is rounded since 97c501d)
   spec.specimen.indices = "lab";  // Griffin's indices: the rate only, no own index measurement
   spec.specimen.deposition_friction = 0.12;  // the preparation the README's projections were timed with
@@ -95,10 +95,9 @@ int main(int argc, char** argv) {
   threads = resolve_threads(threads);
 
   // 1. The full specimen.
-  const DirectShearSpec full = paper_spec(threads, faces);
+  const LabSpec full = paper_spec(threads, faces);
   Stopwatch build_clock;
   DirectShearTest paper(full);
-  paper.world().settings.threads = threads;
   const double build_s = build_clock.seconds();
   const double grains = static_cast<double>(paper.world().model.bodies.size());
   fmt::print("paper-size specimen: {:.0f} x {:.0f} x {:.0f} mm, {:.0f} {} grains of {} faces, {} thread{}\n",
@@ -113,15 +112,15 @@ int main(int argc, char** argv) {
              steps, deposit_rate, peak_memory_gb(), grains * bytes_per_grain() / 1e9);
   std::fflush(stdout);
   const double shear_steps =
-      full.shear.final_strain * full.box.length / (paper.shear_speed() * paper.time_step());
+      full.settings<ShearSpec>().final_strain * full.box.length / (paper.shear_speed() * paper.time_step());
 
   // 2. A small box of the same grains, prepared, then sheared.
-  DirectShearSpec box = full;
+  LabSpec box = full;
   box.box.length = box.box.width = small * 1e-3;
   box.box.height = 8e-3;
-  DirectShearTest t(box);
-  t.world().settings.threads = threads;
-  t.accept_any_density();  // the rate is wanted, whatever density the preparation reaches
+  auto preparation = std::make_unique<SpecimenPreparation>(box);
+  preparation->accept_any_density();  // the rate is wanted, whatever density the preparation reaches
+  DirectShearTest t(box, std::move(preparation));
   Stopwatch prep_clock;
   while (!t.loading() && !t.done()) t.advance(2000);
   const double prep_s = prep_clock.seconds();
@@ -138,7 +137,7 @@ int main(int argc, char** argv) {
   fmt::print("projected paper-size test (preparation {:.3g} steps, a lower bound, + shear to {:.0f} % {:.3g} steps) "
              "x {:.0f} grains at {:.3g} grain-steps/s: {:.1f} h on {} thread{} (goal: under 3 h); "
              "memory about {:.2f} GB packed (goal: under 8 GB)\n",
-             prep_steps, 100 * full.shear.final_strain, shear_steps, grains, shear_rate, hours, threads,
+             prep_steps, 100 * full.settings<ShearSpec>().final_strain, shear_steps, grains, shear_rate, hours, threads,
              threads > 1 ? "s" : "", grains * bytes_per_grain() / 1e9);
   return 0;
 }

@@ -106,7 +106,7 @@ int main(int argc, char** argv) {
   std::vector<Row> rows;
   try {
     for (const std::string& c : classes) {
-      DirectShearSpec spec;
+      LabSpec spec;
       const bool imported = c == folder;
       if (imported) {
         spec.grains.folder = folder;
@@ -145,7 +145,7 @@ int main(int argc, char** argv) {
         Row row;
         row.grains = name;
         row.target = dr;
-        DirectShearSpec s = spec;
+        LabSpec s = spec;
         s.specimen.relative_density = dr;
         s.specimen.deposition_friction = -1;
         fmt::print("{}: target Dr {:.2f}\n", name, dr);
@@ -155,7 +155,7 @@ int main(int argc, char** argv) {
         o.max_friction = max_friction;
         try {
           const Preparation p = prepare_to_target(s, o, say);
-          row.reached = p.test->achieved_own_relative_density();
+          row.reached = p.specimen->achieved_own_relative_density();
           row.friction = p.friction;
           row.trials = p.trials.size();
           row.wall_s = 0;  // the trials' own times (a kept trial's earlier sittings included)

@@ -40,8 +40,8 @@ struct Options {
   std::string only;
 };
 
-DirectShearSpec small_spec(const Options& o, const std::string& sand) {
-  DirectShearSpec spec;
+LabSpec small_spec(const Options& o, const std::string& sand) {
+  LabSpec spec;
   apply_sand_preset(spec, sand);
   spec.box.length = spec.box.width = o.box_mm * 1e-3;
   spec.box.height = 0.7 * o.box_mm * 1e-3;
@@ -50,7 +50,7 @@ DirectShearSpec small_spec(const Options& o, const std::string& sand) {
   spec.specimen.tolerance = 1.0;  // report what one procedure reaches
   spec.specimen.indices = "lab";  // Dr on the sand's lab indices: no own index measurement here
   spec.specimen.deposition_friction = 0.12;
-  spec.shear.final_strain = o.strain;
+  spec.settings<ShearSpec>().final_strain = o.strain;
   spec.numerics.time_step_fraction = 0.4;
   spec.seed = 3;
   return spec;
@@ -62,7 +62,7 @@ struct Outcome {
   std::size_t grains = 0;
 };
 
-Outcome run(const DirectShearSpec& spec) {
+Outcome run(const LabSpec& spec) {
   Stopwatch clock;
   DirectShearTest t(spec);
   while (t.advance(1000)) {
@@ -83,7 +83,7 @@ void presets(const Options& o) {
   fmt::print("{:<18} {:<12} {:>6} {:>7} {:>6} {:>10} {:>10} {:>9}\n", "sand", "grains", "count", "e", "Dr %",
              "peak phi", "peak psi", "wall s");
   for (const char* sand : {"crushed-limestone", "griffin", "ottawa", "glass-beads"}) {
-    const DirectShearSpec spec = small_spec(o, sand);
+    const LabSpec spec = small_spec(o, sand);
     const Outcome r = run(spec);
     fmt::print("{:<18} {:<12} {:>6} {:>7.3f} {:>6.0f} {:>9.1f}° {:>9.1f}° {:>9.0f}\n", sand, spec.grains.preset,
                r.grains, r.e, 100 * r.dr, r.summary.peak_friction_angle_deg, r.summary.peak_dilation_angle_deg,
@@ -97,7 +97,7 @@ void damping(const Options& o) {
   fmt::print("{:>8} {:>8} {:>12} {:>16} {:>9}\n", "gamma_n", "gamma_t", "peak F/N", "final d_v (um)", "wall s");
   std::vector<double> peaks, dvs;
   for (const auto& [gn, gt] : {std::pair{20.0, 10.0}, std::pair{40.0, 20.0}, std::pair{80.0, 40.0}}) {
-    DirectShearSpec spec = small_spec(o, "glass-beads");
+    LabSpec spec = small_spec(o, "glass-beads");
     spec.material.law = contact_law<HertzUserLaw>();
     spec.material.grain.gamma_n = gn;
     spec.material.grain.gamma_t = gt;

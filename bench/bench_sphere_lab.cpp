@@ -28,8 +28,8 @@ using namespace grainlab;
 
 namespace {
 
-DirectShearSpec bead_spec(double strain, int threads) {
-  DirectShearSpec spec;
+LabSpec bead_spec(double strain, int threads) {
+  LabSpec spec;
   apply_sand_preset(spec, "glass-beads");
   spec.material.grain.poisson_ratio = 0.25;
   spec.material.grain.restitution = 0.5;
@@ -44,16 +44,15 @@ DirectShearSpec bead_spec(double strain, int threads) {
   spec.numerics.density_scaling = 1;
   spec.numerics.inertial_number = 1e-3;
   spec.numerics.threads = threads;
-  spec.shear.final_strain = strain;
+  spec.settings<ShearSpec>().final_strain = strain;
   spec.output.strain_interval = 0.005;
   return spec;
 }
 
 void run(double strain, int threads) {
-  const DirectShearSpec spec = bead_spec(strain, threads);
+  const LabSpec spec = bead_spec(strain, threads);
   Stopwatch total;
   DirectShearTest t(spec);
-  t.world().settings.threads = threads;
   const double beads = static_cast<double>(t.world().model.bodies.size());
   fmt::print("\n{} beads, {}, dt {:.4g} s\n", beads, grainlab::thread_count_label(threads), t.time_step());
   std::string phase = t.phase_name();

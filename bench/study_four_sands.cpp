@@ -121,8 +121,8 @@ std::string run_name(const Sand& s, std::uint64_t seed) {
 }
 constexpr double kDrTolerance = 0.05;
 
-DirectShearSpec base_spec(const Options& o, const Sand& s) {
-  DirectShearSpec spec;
+LabSpec base_spec(const Options& o, const Sand& s) {
+  LabSpec spec;
   apply_sand_preset(spec, s.preset);
   if (o.quick) {
     spec.box.length = spec.box.width = 4.0e-3;
@@ -136,7 +136,7 @@ DirectShearSpec base_spec(const Options& o, const Sand& s) {
     spec.grains.shapes = 24;
     spec.grains.faces = 1000;
   }
-  spec.shear.final_strain = o.quick ? 0.6 * s.final_strain : s.final_strain;
+  spec.settings<ShearSpec>().final_strain = o.quick ? 0.6 * s.final_strain : s.final_strain;
   spec.numerics.inertial_number = 9e-4;
   spec.numerics.threads = o.threads;
   spec.seed = kFirstSeed;
@@ -247,7 +247,7 @@ double earlier_sittings(const nlohmann::json& sittings) {
 
 // Runs `grainlab run` on spec (written to DIR/configs/name.toml) into DIR/name,
 // or resumes it from its checkpoint; a run whose run.json is written is done.
-bool shear_run(const Options& o, DirectShearSpec spec, const std::string& name, nlohmann::json& record) {
+bool shear_run(const Options& o, LabSpec spec, const std::string& name, nlohmann::json& record) {
   const fs::path folder = fs::path(o.out) / name;
   spec.output.folder = folder.string();
   const fs::path config = fs::path(o.out) / "configs" / (name + ".toml");
@@ -329,7 +329,7 @@ void save(const Options& o, const nlohmann::json& study) {
 
 // What the report tabulates, from the run's run.json into the study's record;
 // the spec gets the own indices and the friction the run found.
-void copy_preparation(const Options& o, const std::string& name, DirectShearSpec& spec, nlohmann::json& record) {
+void copy_preparation(const Options& o, const std::string& name, LabSpec& spec, nlohmann::json& record) {
   const fs::path run_json = fs::path(o.out) / name / "run.json";
   if (!fs::exists(run_json)) {
     record["error"] = fmt::format("no {}: the run failed (see its messages above)", run_json.string());
@@ -368,17 +368,16 @@ void estimate(const Options& o) {
              "steps; a packed specimen of faceted grains steps {:g} times slower (see the source)\n",
              resolve_threads(o.threads), o.seeds, kPackedSlowdown);
   for (const Sand& s : kSands) {
-    DirectShearSpec spec = base_spec(full, s);
+    LabSpec spec = base_spec(full, s);
     spec.specimen.indices = "lab";  // the rate only: no index measurement, no search
     spec.specimen.deposition_friction = 0.12;
     DirectShearTest t(spec);
-    t.world().settings.threads = spec.numerics.threads;
     Stopwatch clock;
     t.advance(2000);
     const double rate = 2000 / clock.seconds();
     const bool spheres = std::string(s.name) == "glass-beads";
     const double packed_rate = spheres ? rate : rate / kPackedSlowdown;
-    const double shear_steps = spec.shear.final_strain * spec.box.length / (t.shear_speed() * t.time_step());
+    const double shear_steps = spec.settings<ShearSpec>().final_strain * spec.box.length / (t.shear_speed() * t.time_step());
     // Steps measured in the sub-angular run (2026-12-02): own e_min 23,500
     // (frictionless compaction: packed), e_max 6,100 (loose deposition), three
     // trials of about 11,000 (mostly deposition), consolidation about 10,000
@@ -461,7 +460,7 @@ int main(int argc, char** argv) {
                             {"target_relative_density", kTargetDr}, {"sands", nlohmann::json::array()},
                             {"damping", nlohmann::json::array()}};
     Stopwatch all;
-    DirectShearSpec beads;
+    LabSpec beads;
     bool have_beads = false;
     const auto done = [&](const Sand& s, std::uint64_t seed) {
       return fs::exists(fs::path(o.out) / run_name(s, seed) / "run.json");
@@ -472,7 +471,7 @@ int main(int argc, char** argv) {
       return std::pair{kSands.size(), kFirstSeed};
     };
     const auto tabulate = [&](const Sand& s, std::uint64_t seed) {
-      DirectShearSpec spec = base_spec(o, s);
+      LabSpec spec = base_spec(o, s);
       spec.seed = seed;
       const std::string name = run_name(s, seed);
       nlohmann::json j = {{"name", s.name}, {"seed", seed}, {"sand_preset", s.preset},
@@ -505,7 +504,7 @@ int main(int argc, char** argv) {
       const fs::path specimen = fs::path(o.out) / "damping-40-20" / "specimen.bin";
       for (const auto& [gn, gt] : {std::pair{40.0, 20.0}, std::pair{20.0, 10.0}, std::pair{80.0, 40.0}}) {
         if (!damping_done(gn, gt) && (!run_pending || !selected(o, "damping"))) continue;
-        DirectShearSpec spec = beads;
+        LabSpec spec = beads;
         if (gn != 40.0) {
           if (!damping_done(gn, gt) && !fs::exists(specimen)) {
             fmt::print("damping ({:g}, {:g}) skipped: it shears the specimen of the (40, 20) run, which has none\n",

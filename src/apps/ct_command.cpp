@@ -166,6 +166,9 @@ Command add_ct_command(CLI::App& app) {
                 "0: a fifth of the grains' median inscribed radius (at least 1 voxel), which suits 14 to 72 voxels "
                 "across; give it for a wide grading (small grains against large ones) and check grains.csv")
       ->capture_default_str();
+  s->add_option("--threads", seg->options.threads, "worker threads meshing the grains (0 = all cores)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
   s->add_option("--min-voxels", seg->options.min_voxels,
                 "smallest grain kept, in voxels (smaller regions are noise or fragments; smaller enclosed pores are "
                 "filled)")

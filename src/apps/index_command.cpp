@@ -40,7 +40,7 @@ struct IndexOptions {
 };
 
 int run_index(const IndexOptions& o) {
-  DirectShearSpec spec = o.config.empty() ? DirectShearSpec{} : load_config(o.config);
+  LabSpec spec = o.config.empty() ? LabSpec{} : load_config(o.config);
   if (!o.preset.empty()) spec.grains.preset = o.preset, spec.grains.folder.clear();
   if (!o.folder.empty()) spec.grains.folder = o.folder;
   if (o.shapes > 0) spec.grains.shapes = o.shapes;

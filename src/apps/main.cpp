@@ -2,7 +2,6 @@
 // and explains itself with --help.
 #include "apps/commands.h"
 #include "core/error.h"
-#include "core/parallel.h"
 #include "core/wait_policy.h"
 
 #include <fmt/format.h>
@@ -17,10 +16,6 @@ int main(int argc, char** argv) {
       "grainlab: a discrete-element engine and virtual soil laboratory for realistic sand "
       "grains.\nSI units throughout (m, kg, s, N, Pa)."};
   app.require_subcommand(1);
-  int threads = 0;
-  app.add_option("--threads", threads,
-                 "at most this many worker threads (default: all cores); a run times which count is "
-                 "fastest unless its numerics.threads fixes the count");
 
   const std::vector<apps::Command> commands = {apps::add_grains_command(app),
                                                apps::add_run_command(app), apps::add_report_command(app),
@@ -31,7 +26,6 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
   }
-  set_default_thread_count(threads);
   try {
     for (const auto& run : commands) {
       const int rc = run();

@@ -24,6 +24,7 @@
 #include "lab/lab_test.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <atomic>
 #include <csignal>
@@ -46,7 +47,8 @@ struct RunOptions {
   bool resume = false;
   bool quiet = false;
   bool no_report = false;
-  std::string test = "direct-shear";  // for --print-defaults and --default
+  std::string test;                   // for --print-defaults and --default ("": the spec's default test)
+  int threads = -1;                   // --threads: numerics.threads of the run (-1: the file's)
 };
 
 // The summary value named key (top level), 0 if the test has none.
@@ -93,7 +95,7 @@ void write_run_json(const LabTest& test, const std::filesystem::path& out, doubl
 
 int run(const RunOptions& o) {
   if (o.print_defaults) {
-    fmt::print("{}", default_config_toml(o.test));
+    fmt::print("{}", default_config_toml(o.test.empty() ? LabSpec{}.test : o.test));
     return 0;
   }
   if (o.print_reference) {
@@ -103,21 +105,28 @@ int run(const RunOptions& o) {
   if (o.file.empty() && !o.use_defaults)
     input_error("grainlab run needs a config file (grainlab run test.toml), or --default for the "
                 "embedded default; `grainlab run --print-defaults > test.toml` writes one to edit");
-  if (!o.file.empty() && o.test != "direct-shear")
+  if (!o.file.empty() && !o.test.empty() && o.test != LabSpec{}.test)
     input_error("--test {} chooses the test of --default and --print-defaults; a config file names its own "
                 "(its top-level key test = \"{}\")",
                 o.test, o.test);
-  const DirectShearSpec spec = o.use_defaults ? parse_config(default_config_toml(o.test), "<embedded default>")
-                                              : load_config(o.file);
+  LabSpec spec = o.use_defaults ? parse_config(default_config_toml(o.test.empty() ? LabSpec{}.test : o.test),
+                                               "<embedded default>")
+                                 : load_config(o.file);
+  if (o.threads >= 0) spec.numerics.threads = o.threads;  // the command line overrides the file
 
   // Everything that can refuse the run happens before anything is written
   // (but the own index densities, which are measured once and kept).
   const std::filesystem::path out = spec.output.folder;
   const std::filesystem::path checkpoint = out / "checkpoint.bin";
+  // The checkpoints' key: the config the run started with (a resumed run may
+  // set another thread count with --threads: the bits do not depend on it).
+  LabSpec keyed = spec;
   if (o.resume) {
     if (!std::filesystem::exists(checkpoint))
       input_error("--resume: no checkpoint at '{}'; start the run without --resume", checkpoint.string());
-    const DirectShearSpec before = load_config(out / "config.toml");
+    LabSpec before = load_config(out / "config.toml");
+    keyed.numerics.threads = before.numerics.threads;
+    if (o.threads >= 0) before.numerics.threads = o.threads;
     const auto diff = config_differences(before, spec);
     if (!diff.empty())
       input_error("--resume: the config differs from the run in '{}' ({}); resume with the same config "
@@ -136,7 +145,6 @@ int run(const RunOptions& o) {
     return 130;
   }
   LabTest& test = *prepared.test;
-  test.world().settings.threads = spec.numerics.threads;
   observe_shear_analysis(test);  // the same on --resume: the rows of both runs then match
   if (prepared.specimen) {  // another run's prepared specimen (specimen.from), checked by prepare_run
     test.world().state = std::move(prepared.specimen->state);
@@ -146,7 +154,7 @@ int run(const RunOptions& o) {
   }
   if (o.resume) {
     Checkpoint ck = load_checkpoint(checkpoint);
-    if (ck.config_hash != config_hash(spec))
+    if (ck.config_hash != config_hash(keyed))
       input_error("--resume: checkpoint '{}' belongs to another config", checkpoint.string());
     if (!same_grains(ck, test.world().model))
       input_error("--resume: checkpoint '{}' was written for other grains than this grainlab makes from the same "
@@ -164,7 +172,7 @@ int run(const RunOptions& o) {
   ShearSnapshots snapshots(out, test, o.resume);
   if (!o.resume && prepared.specimen) snapshots.write_loading_start(test);
   const auto save = [&] {
-    save_checkpoint(checkpoint, test.world().state, test.save(), config_hash(spec),
+    save_checkpoint(checkpoint, test.world().state, test.save(), config_hash(keyed),
                     grains_fingerprint(test.world().model));
     drop_kept_trials(out);  // the run goes on from its checkpoint now
   };
@@ -272,8 +280,13 @@ Command add_run_command(CLI::App& app) {
                 "docs/config.md");
   cmd->add_flag("--default", o->use_defaults, "run the embedded default (a small box of rounded grains, Ottawa-like)");
   cmd->add_option("--test", o->test,
-                  "the test of --default and --print-defaults: direct-shear (the default), oedometer or triaxial")
+                  fmt::format("the test of --default and --print-defaults: {} (default {})",
+                              fmt::join(lab_test_names(), ", "), LabSpec{}.test))
       ->check(CLI::IsMember(lab_test_names()));
+  cmd->add_option("--threads", o->threads,
+                  "the run's worker threads: sets numerics.threads, overriding the config file's (0 = automatic: "
+                  "up to all cores, the fastest count timed as it runs; the bits are the same on any count)")
+      ->check(CLI::NonNegativeNumber);
   cmd->add_flag("--resume", o->resume, "continue from output.folder/checkpoint.bin (same config)");
   cmd->add_flag("--quiet", o->quiet, "no progress lines");
   cmd->add_flag("--no-report", o->no_report, "skip the HTML report at the end (write it later with grainlab report)");

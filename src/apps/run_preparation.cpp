@@ -17,9 +17,9 @@ namespace grainlab::apps {
 
 namespace fs = std::filesystem;
 
-PreparedRun prepare_run(const DirectShearSpec& spec, const fs::path& out, bool resume,
+PreparedRun prepare_run(const LabSpec& spec, const fs::path& out, bool resume,
                         const std::function<bool()>& stop) {
-  DirectShearSpec r = spec;
+  LabSpec r = spec;
   PreparedRun run;
   const fs::path record_file = out / "preparation.json";
   if (resume) {
@@ -139,14 +139,11 @@ PreparedRun prepare_run(const DirectShearSpec& spec, const fs::path& out, bool r
     Preparation p = prepare_to_target(r, search, print);
     r.specimen.deposition_friction = p.friction;
     run.record["trials"] = to_json(p.trials);
-    if (r.test == "direct-shear") {
-      run.test = std::move(p.test);
-    } else {
-      // The trials were direct shear preparations: the test prepares its
-      // own specimen again with the friction found (one more preparation).
+    // A test prepared in another box than the trials' prepares its own
+    // specimen again with the friction found (one more preparation).
+    run.test = make_lab_test(r.test, r, std::move(p.specimen));
+    if (run.test->world().state.step == 0)
       fmt::print("preparing the {} specimen with deposition friction {:.4g}\n", r.test, p.friction);
-      run.test = make_lab_test(r.test, r);
-    }
   } else {
     run.test = make_lab_test(r.test, r);
   }

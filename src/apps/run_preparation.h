@@ -32,7 +32,7 @@ struct PreparedRun {
 // preparation.json. When `stop` returns true while the index densities are
 // measured or the deposition friction searched, the preparation in progress
 // is kept and Stopped (core/error.h) thrown.
-PreparedRun prepare_run(const DirectShearSpec& spec, const std::filesystem::path& out, bool resume,
+PreparedRun prepare_run(const LabSpec& spec, const std::filesystem::path& out, bool resume,
                         const std::function<bool()>& stop = {});
 
 }  // namespace grainlab::apps

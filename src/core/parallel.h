@@ -19,12 +19,6 @@ inline int resolve_threads(int requested) { return requested > 0 ? requested : o
 // Threads a loop with no explicit count uses (the OpenMP default).
 inline int thread_count() { return omp_get_max_threads(); }
 
-// Sets the process default (what threads = 0 means). Only a program's main()
-// calls it (the CLI's --threads); a World takes WorldSettings::threads.
-inline void set_default_thread_count(int n) {
-  if (n > 0) omp_set_num_threads(n);
-}
-
 // Calls f(i) for i in [0, n) on `threads` threads (0 = default). Chunks are
 // dynamic: loop bodies of uneven cost (narrowphase pairs) balance well; order
 // of calls is unspecified. Loops of at most one chunk, or of fewer than

@@ -115,7 +115,7 @@ void mesh_and_measure(LabelVolume& labels, const std::optional<GreyField>& grey,
       progress.report(static_cast<double>(d) / regions.size());
       report.unlock();
     }
-  }, 1);
+  }, 1, options.threads);
   for (const auto& e : errors) {
     if (e) std::rethrow_exception(e);
   }

@@ -27,6 +27,7 @@ struct SegmentOptions {
   double h = 0;                    // h-maxima depth (voxels): the smallest neck-to-centre rise that separates
                                    // grains; 0: a fifth of the median inscribed radius (itk_bridge.h)
   std::int64_t min_voxels = 100;   // smaller regions are noise; smaller enclosed pores are filled
+  int threads = 0;                 // worker threads meshing the grains (0 = all cores)
   MeshingOptions meshing;
 };
 

@@ -140,8 +140,8 @@ std::uint64_t fnv1a64(std::span<const std::uint8_t> bytes) {
   return h;
 }
 
-std::uint64_t specimen_hash(const DirectShearSpec& spec) {
-  DirectShearSpec key;  // every other field at its default
+std::uint64_t specimen_hash(const LabSpec& spec) {
+  LabSpec key;  // every other field at its default
   key.test = spec.test;
   key.seed = spec.seed;
   key.grains = spec.grains;
@@ -151,7 +151,7 @@ std::uint64_t specimen_hash(const DirectShearSpec& spec) {
   return config_hash(key);
 }
 
-std::uint64_t config_hash(const DirectShearSpec& spec) {
+std::uint64_t config_hash(const LabSpec& spec) {
   const std::string text = to_toml(spec);
   return fnv1a64({reinterpret_cast<const std::uint8_t*>(text.data()), text.size()});
 }

@@ -18,7 +18,7 @@
 
 #include "dynamics/model.h"
 #include "dynamics/state.h"
-#include "lab/direct_shear_spec.h"
+#include "lab/lab_spec.h"
 
 #include <cstdint>
 #include <filesystem>
@@ -55,7 +55,7 @@ inline constexpr std::uint32_t kCheckpointVersion = 7;  // 3: contacts carry gai
 // stress, density scaling) as a hash: a specimen.bin (a checkpoint written as
 // loading began, with this in place of config_hash) fits any spec with the
 // same hash, whatever its material, damping or loading.
-std::uint64_t specimen_hash(const DirectShearSpec& spec);
+std::uint64_t specimen_hash(const LabSpec& spec);
 
 // Writes a checkpoint atomically (RunError on failure).
 void save_checkpoint(const std::filesystem::path& path, const State& state, std::span<const std::uint8_t> protocol,
@@ -73,6 +73,6 @@ Checkpoint decode_checkpoint(std::span<const std::uint8_t> bytes, const std::str
 // FNV-1a 64-bit hash of bytes.
 std::uint64_t fnv1a64(std::span<const std::uint8_t> bytes);
 // Hash of to_toml(spec): a resumed run checks it against the checkpoint's.
-std::uint64_t config_hash(const DirectShearSpec& spec);
+std::uint64_t config_hash(const LabSpec& spec);
 
 }  // namespace grainlab

@@ -8,7 +8,7 @@
 
 #include "core/error.h"
 #include "io/spec_fields.h"
-#include "lab/lab_test.h"
+#include "lab/lab_registry.h"
 #include "grains/generator.h"
 #include "lab/sand_presets.h"
 
@@ -36,10 +36,11 @@ namespace grainlab {
 namespace {
 
 #define GL_FIELD(table, key, member, doc) \
-  SpecField { table, key, doc, [](DirectShearSpec& s) -> SpecFieldRef { return &s.member; } }
+  SpecField { table, key, doc, [](LabSpec& s) -> SpecFieldRef { return &s.member; } }
 
-const std::array kFields{
-    GL_FIELD("", "test", test, "the lab test: \"direct-shear\" (reads [shear]) | \"oedometer\" (reads [oedometer]) | \"triaxial\" (reads [triaxial])"),
+// The keys before the registered tests' tables.
+const std::array kHeadFields{
+    GL_FIELD("", "test", test, ""),  // its doc names the registered tests (spec_fields())
     GL_FIELD("", "seed", seed, "seed of every random choice (grain shapes, sizes, placement); same seed, same run"),
 
     GL_FIELD("grains", "preset", grains.preset, "synthetic grain class: glass-beads | rounded | sub-angular | angular"),
@@ -94,14 +95,10 @@ const std::array kFields{
     GL_FIELD("consolidation", "tolerance", consolidation.tolerance, "relative stress error accepted, in (0, 1)"),
     GL_FIELD("consolidation", "max_unbalanced", consolidation.max_unbalanced, "unbalanced-force ratio accepted as at rest"),
 
-    GL_FIELD("shear", "speed", shear.speed, "m/s of the upper half; 0 = from numerics.inertial_number"),
-    GL_FIELD("shear", "final_strain", shear.final_strain, "shear strain d_h / L at which the test ends, in (0, 1]"),
+};
 
-    GL_FIELD("oedometer", "stresses", oedometer.stresses, "Pa, the cap's stresses after consolidation, in order; one below the one before unloads"),
-    GL_FIELD("oedometer", "loading", oedometer.loading, "\"stages\": each stress held to rest (incremental loading, ASTM D2435) | \"constant-rate\": the cap moves at a constant strain rate from numerics.inertial_number to each stress (ASTM D4186)"),
-
-    GL_FIELD("triaxial", "final_strain", triaxial.final_strain, "axial strain (H_0 - H)/H_0 at which the test ends, in (0, 0.5]"),
-
+// The keys after the registered tests' tables.
+const std::array kTailFields{
     GL_FIELD("numerics", "time_step", numerics.time_step, "s; 0 = time_step_fraction x the critical step"),
     GL_FIELD("numerics", "time_step_fraction", numerics.time_step_fraction, "fraction of the critical step used when time_step = 0, in (0, 1]"),
     GL_FIELD("numerics", "density_scaling", numerics.density_scaling, "factor on inertia (not weight); 0 = automatic"),
@@ -117,15 +114,15 @@ const std::array kFields{
 
 #undef GL_FIELD
 
-constexpr std::array<SpecTable, 10> kTables{{
+// The shared tables: those before the registered tests' tables, then the rest.
+constexpr std::array<SpecTable, 5> kHeadTables{{
     {"grains", "the grains: a synthetic class or a folder of scanned meshes, and the sieve range"},
     {"material", "grain material and contact law (SI units)"},
     {"box", "the box: split in two halves for the direct shear, one rigid ring (no gap) for the oedometer"},
     {"specimen", "the specimen's target density"},
     {"consolidation", "servo-controlled consolidation under the top cap"},
-    {"shear", "shearing: the upper half moves along x", "direct-shear"},
-    {"oedometer", "one-dimensional compression in the box with its gap closed (a rigid ring): the loading schedule", "oedometer"},
-    {"triaxial", "drained triaxial compression: all five walls servo-held at consolidation.normal_stress (sigma_3), then the cap moves down", "triaxial"},
+}};
+constexpr std::array<SpecTable, 2> kTailTables{{
     {"numerics", "time step, density scaling, threads"},
     {"output", "what the run writes, and where"},
 }};
@@ -133,10 +130,36 @@ constexpr std::array<SpecTable, 10> kTables{{
 // The grain classes grains/ can generate.
 constexpr std::array<std::string_view, 4> kGrainClasses{"glass-beads", "rounded", "sub-angular", "angular"};
 
+// The key list and the tables for the tests registered now (rebuilt when one is added).
+struct KeyList {
+  std::vector<SpecField> fields;
+  std::vector<SpecTable> tables;
+  std::size_t tests = 0;
+};
+
+const KeyList& key_list() {
+  static KeyList k;
+  const std::vector<LabTestEntry>& entries = lab_test_entries();
+  if (!k.fields.empty() && k.tests == entries.size()) return k;
+  k.fields.assign(kHeadFields.begin(), kHeadFields.end());
+  k.tables.assign(kHeadTables.begin(), kHeadTables.end());
+  std::string doc = "the lab test:";
+  for (const LabTestEntry& e : entries) {
+    doc += fmt::format("{} \"{}\" (reads [{}])", &e == &entries.front() ? "" : " |", e.name, e.keys.table.name);
+    k.fields.insert(k.fields.end(), e.keys.fields.begin(), e.keys.fields.end());
+    k.tables.push_back(e.keys.table);
+  }
+  k.fields.front().doc = doc;  // the key `test`
+  k.fields.insert(k.fields.end(), kTailFields.begin(), kTailFields.end());
+  k.tables.insert(k.tables.end(), kTailTables.begin(), kTailTables.end());
+  k.tests = entries.size();
+  return k;
+}
+
 }  // namespace
 
-std::span<const SpecField> spec_fields() { return kFields; }
-std::span<const SpecTable> spec_tables() { return kTables; }
+const std::vector<SpecField>& spec_fields() { return key_list().fields; }
+const std::vector<SpecTable>& spec_tables() { return key_list().tables; }
 
 // ---------------------------------------------------------------------------
 // Helpers shared by parsing and validation.
@@ -183,25 +206,26 @@ std::string suggestion(std::string_view name, const std::vector<std::string>& ca
 
 std::vector<std::string> keys_of_table(std::string_view table) {
   std::vector<std::string> keys;
-  for (const SpecField& f : kFields)
+  for (const SpecField& f : spec_fields())
     if (f.table == table) keys.emplace_back(f.key);
   return keys;
 }
 
 std::vector<std::string> table_names() {
   std::vector<std::string> names;
-  for (const SpecTable& t : kTables) names.emplace_back(t.name);
+  for (const SpecTable& t : spec_tables()) names.emplace_back(t.name);
   return names;
 }
 
 const SpecField* find_field(std::string_view table, std::string_view key) {
-  for (const SpecField& f : kFields)
+  for (const SpecField& f : spec_fields())
     if (f.table == table && f.key == key) return &f;
   return nullptr;
 }
 
 bool is_table_name(std::string_view name) {
-  return std::any_of(kTables.begin(), kTables.end(), [&](const SpecTable& t) { return t.name == name; });
+  const std::vector<SpecTable>& tables = spec_tables();
+  return std::any_of(tables.begin(), tables.end(), [&](const SpecTable& t) { return t.name == name; });
 }
 
 std::string toml_double(double v);
@@ -286,8 +310,8 @@ std::string toml_value(const SpecFieldRef& ref) {
       ref);
 }
 
-std::string write_toml(const DirectShearSpec& spec_in, bool comments) {
-  DirectShearSpec spec = spec_in;  // the field refs need a mutable spec
+std::string write_toml(const LabSpec& spec_in, bool comments) {
+  LabSpec spec = spec_in;  // the field refs need a mutable spec
   std::string out;
   if (comments) {
     out += fmt::format(
@@ -297,11 +321,12 @@ std::string write_toml(const DirectShearSpec& spec_in, bool comments) {
         spec.test);
   }
   std::string_view table = "";
-  for (const SpecField& f : kFields) {
-    const auto t = std::find_if(kTables.begin(), kTables.end(), [&](const SpecTable& x) { return x.name == f.table; });
+  const std::vector<SpecTable>& tables = spec_tables();
+  for (const SpecField& f : spec_fields()) {
+    const auto t = std::find_if(tables.begin(), tables.end(), [&](const SpecTable& x) { return x.name == f.table; });
     // The commented defaults leave out the tables only another test reads
     // (config.toml keeps every key: resuming compares them all).
-    if (comments && t != kTables.end() && !t->test.empty() && t->test != spec.test) continue;
+    if (comments && t != tables.end() && !t->test.empty() && t->test != spec.test) continue;
     if (f.table != table) {
       table = f.table;
       out += "\n";
@@ -330,10 +355,10 @@ std::string write_toml(const DirectShearSpec& spec_in, bool comments) {
               rule, key, origin);
 }
 
-void validate_spec(const DirectShearSpec& spec_in, const std::string& source, const LineMap* lines) {
-  DirectShearSpec spec = spec_in;
+void validate_spec(const LabSpec& spec_in, const std::string& source, const LineMap* lines) {
+  LabSpec spec = spec_in;
   // Every number must be finite (TOML allows inf and nan).
-  for (const SpecField& f : kFields) {
+  for (const SpecField& f : spec_fields()) {
     const SpecFieldRef ref = f.ref(spec);
     if (const auto* p = std::get_if<double*>(&ref); p && !std::isfinite(**p))
       impossible(source, lines, f.dotted(), toml_double(**p), "a finite number");
@@ -441,21 +466,25 @@ void validate_spec(const DirectShearSpec& spec_in, const std::string& source, co
        "in (0, 1) (relative: 1 % is 0.01)");
   need(c.max_unbalanced > 0, "consolidation.max_unbalanced", c.max_unbalanced, "> 0");
 
-  const ShearSpec& sh = spec.shear;
-  need(sh.speed >= 0, "shear.speed", sh.speed, ">= 0 (m/s; 0 picks it from numerics.inertial_number)");
-  need(sh.final_strain > 0 && sh.final_strain <= 1, "shear.final_strain", sh.final_strain,
-       "in (0, 1] (a fraction: 10 % is 0.10)");
-
-  const std::vector<double>& stresses = spec.oedometer.stresses;
-  if (stresses.empty() || *std::min_element(stresses.begin(), stresses.end()) <= 0)
-    impossible(source, lines, "oedometer.stresses", toml_value(&spec.oedometer.stresses),
-               "a list of at least one stress > 0 (Pa; e.g. [200e3, 400e3, 800e3, 200e3])");
-
-  need_s(spec.oedometer.loading == "stages" || spec.oedometer.loading == "constant-rate", "oedometer.loading",
-         spec.oedometer.loading, "\"stages\" or \"constant-rate\"");
-
-  need(spec.triaxial.final_strain > 0 && spec.triaxial.final_strain <= 0.5, "triaxial.final_strain",
-       spec.triaxial.final_strain, "in (0, 0.5] (axial strain: 15 % is 0.15)");
+  // Each registered test's own keys (lab/spec_keys.h), in registration order.
+  const SpecNeed need_test = [&](bool ok, std::string_view key, SpecFieldRef value, std::string_view rule) {
+    if (ok) return;
+    const std::string shown = std::visit(
+        [&](auto* p) -> std::string {
+          using T = std::remove_pointer_t<decltype(p)>;
+          if constexpr (std::is_same_v<T, double> || std::is_same_v<T, int> || std::is_same_v<T, std::uint64_t>)
+            return fmt::format("{}", *p);
+          else if constexpr (std::is_same_v<T, std::string>) return toml_string(*p);
+          else return toml_value(value);
+        },
+        value);
+    impossible(source, lines, key, shown, rule);
+  };
+  const LabTestEntry* entry = nullptr;
+  for (const LabTestEntry& e : lab_test_entries()) {
+    if (e.name == spec.test) entry = &e;
+    if (e.keys.validate) e.keys.validate(spec, need_test);
+  }
 
   const NumericsSpec& nu = spec.numerics;
   need(nu.time_step >= 0, "numerics.time_step", nu.time_step, ">= 0 (s; 0 picks a safe step)");
@@ -467,10 +496,13 @@ void validate_spec(const DirectShearSpec& spec_in, const std::string& source, co
 
   const OutputSpec& o = spec.output;
   need_s(!o.folder.empty(), "output.folder", o.folder, "a folder name, not empty");
-  const bool triaxial = spec.test == "triaxial";
-  const double final_strain = triaxial ? spec.triaxial.final_strain : sh.final_strain;
+  // Samples every strain_interval up to the test's final strain (its final_strain_key).
+  const SpecField* end = nullptr;
+  for (const SpecField& f : spec_fields())
+    if (entry && f.dotted() == entry->keys.final_strain_key) end = &f;
+  const double final_strain = end ? *std::get<double*>(end->ref(spec)) : INFINITY;
   need(o.strain_interval > 0 && o.strain_interval <= final_strain, "output.strain_interval", o.strain_interval,
-       fmt::format("> 0 and at most {} = {}", triaxial ? "triaxial.final_strain" : "shear.final_strain", final_strain));
+       end ? fmt::format("> 0 and at most {} = {}", end->dotted(), final_strain) : std::string("> 0"));
   need(o.checkpoint_interval > 0, "output.checkpoint_interval", o.checkpoint_interval, "> 0 (s of wall-clock time)");
   need(o.snapshot_interval >= 0, "output.snapshot_interval", o.snapshot_interval,
        ">= 0 (shear strain between ParaView snapshots; 0 = start and end of shear only)");
@@ -534,7 +566,7 @@ void assign(const SpecField& f, const SpecFieldRef& ref, const toml::node& n, co
 // ---------------------------------------------------------------------------
 // Public API.
 
-DirectShearSpec parse_config(std::string_view toml_text, const std::string& source_name) {
+LabSpec parse_config(std::string_view toml_text, const std::string& source_name) {
   toml::table root;
   try {
     root = toml::parse(toml_text, source_name);
@@ -578,14 +610,14 @@ DirectShearSpec parse_config(std::string_view toml_text, const std::string& sour
     } else {
       // A table key written at the top level (after no header, or before the first one)?
       std::string hint;
-      for (const SpecField& f : kFields)
+      for (const SpecField& f : spec_fields())
         if (!f.table.empty() && f.key == name) {
           hint = fmt::format(" It belongs in the [{}] table: put it below the [{}] header.", f.table, f.table);
           break;
         }
       if (hint.empty()) {
         std::vector<std::string> top = table_names();
-        for (const SpecField& f : kFields)
+        for (const SpecField& f : spec_fields())
           if (f.table.empty()) top.emplace_back(f.key);
         hint = suggestion(name, top) + fmt::format(" Top-level keys: test, seed; tables: {}.", join(table_names()));
       }
@@ -594,7 +626,7 @@ DirectShearSpec parse_config(std::string_view toml_text, const std::string& sour
   }
 
   // The sand preset first, then every other key on top of it.
-  DirectShearSpec spec;
+  LabSpec spec;
   for (const auto& [f, n] : given) {
     if (f->table != "material" || f->key != "preset") continue;
     std::string preset;
@@ -616,7 +648,7 @@ DirectShearSpec parse_config(std::string_view toml_text, const std::string& sour
   return spec;
 }
 
-DirectShearSpec load_config(const std::filesystem::path& file) {
+LabSpec load_config(const std::filesystem::path& file) {
   std::error_code ec;
   if (!std::filesystem::exists(file, ec))
     input_error("config file '{}' does not exist (working directory: {}). Check the path, or write a default "
@@ -632,24 +664,25 @@ DirectShearSpec load_config(const std::filesystem::path& file) {
   return parse_config(text.str(), file.string());
 }
 
-void validate(const DirectShearSpec& spec, const std::string& source_name) {
+void validate(const LabSpec& spec, const std::string& source_name) {
   validate_spec(spec, source_name, nullptr);
 }
 
 std::string default_config_toml(const std::string& test) {
-  DirectShearSpec spec;
+  LabSpec spec;
   spec.test = test;
-  if (test == "oedometer" || test == "triaxial") spec.output.folder = "runs/" + test;
+  spec.output.folder = "runs/" + test;  // runs/direct_shear, runs/oedometer, runs/triaxial
+  std::replace(spec.output.folder.begin(), spec.output.folder.end(), '-', '_');
   validate_spec(spec, "the defaults", nullptr);  // an unknown test name
   return write_toml(spec, true);
 }
 
-std::string to_toml(const DirectShearSpec& spec) { return write_toml(spec, false); }
+std::string to_toml(const LabSpec& spec) { return write_toml(spec, false); }
 
-std::vector<std::string> config_differences(const DirectShearSpec& a_in, const DirectShearSpec& b_in) {
-  DirectShearSpec a = a_in, b = b_in;
+std::vector<std::string> config_differences(const LabSpec& a_in, const LabSpec& b_in) {
+  LabSpec a = a_in, b = b_in;
   std::vector<std::string> diff;
-  for (const SpecField& f : kFields) {
+  for (const SpecField& f : spec_fields()) {
     const bool same = std::visit(
         [&](auto* pa) {
           using P = decltype(pa);

@@ -1,15 +1,17 @@
-// The run configuration file: TOML in, DirectShearSpec out, and back.
+// The run configuration file: TOML in, LabSpec out, and back.
 //
-// Layout: top-level `seed`, then tables [grains], [material], [box],
-// [specimen], [consolidation], [shear], [numerics], [output] whose keys are
-// the field names of lab/direct_shear_spec.h (material.contact_law is
-// MaterialSpec::law; the other material keys are those of Material).
+// Layout: top-level `test` and `seed`, then tables [grains], [material],
+// [box], [specimen], [consolidation], each registered lab test's own table
+// ([shear], [oedometer], [triaxial]: lab/lab_registry.h), [numerics],
+// [output], whose keys are the field names of lab/lab_spec.h and of the
+// tests' settings (material.contact_law is MaterialSpec::law; the other
+// material keys are those of Material).
 // `material.preset` applies a sand preset (lab/sand_presets.h) first; every
 // other key in the file then overrides it. Every problem is an InputError
 // naming the file, the line, the dotted key, what is wrong and what to do.
 #pragma once
 
-#include "lab/direct_shear_spec.h"
+#include "lab/lab_spec.h"
 
 #include <filesystem>
 #include <string>
@@ -19,22 +21,22 @@
 namespace grainlab {
 
 // Reads and parses a config file (missing or unreadable file: InputError).
-DirectShearSpec load_config(const std::filesystem::path& file);
+LabSpec load_config(const std::filesystem::path& file);
 
 // Parses config text; source_name (a file name) is used in messages.
-DirectShearSpec parse_config(std::string_view toml_text, const std::string& source_name);
+LabSpec parse_config(std::string_view toml_text, const std::string& source_name);
 
 // Throws InputError naming source_name and the dotted key of the first impossible value.
-void validate(const DirectShearSpec& spec, const std::string& source_name);
+void validate(const LabSpec& spec, const std::string& source_name);
 
 // A complete config for lab test `test` (lab/lab_registry.cpp) with every key it
 // reads, its unit and meaning in a comment, and the struct defaults.
-std::string default_config_toml(const std::string& test = "direct-shear");
+std::string default_config_toml(const std::string& test = LabSpec{}.test);
 
 // Every key of `spec` as TOML, exact (shortest round-trip doubles); parse_config reads it back equal.
-std::string to_toml(const DirectShearSpec& spec);
+std::string to_toml(const LabSpec& spec);
 
 // Dotted keys whose values differ between a and b (empty: same config).
-std::vector<std::string> config_differences(const DirectShearSpec& a, const DirectShearSpec& b);
+std::vector<std::string> config_differences(const LabSpec& a, const LabSpec& b);
 
 }  // namespace grainlab

@@ -23,12 +23,12 @@ const EmbeddedIndices& default_grain_indices() {
   return record;
 }
 
-std::uint64_t index_key_hash(const DirectShearSpec& spec) {
+std::uint64_t index_key_hash(const LabSpec& spec) {
   const std::string key = index_cache_key(spec);
   return fnv1a64(std::span(reinterpret_cast<const std::uint8_t*>(key.data()), key.size()));
 }
 
-std::optional<EmbeddedIndices> embedded_index_densities(const DirectShearSpec& spec) {
+std::optional<EmbeddedIndices> embedded_index_densities(const LabSpec& spec) {
   const EmbeddedIndices& r = default_grain_indices();
   if (index_key_hash(spec) != r.key_hash) return std::nullopt;
   return r;

@@ -15,7 +15,7 @@
 // generator makes have changed, with the command that measures them again.
 #pragma once
 
-#include "lab/direct_shear_spec.h"
+#include "lab/lab_spec.h"
 
 #include <cstdint>
 #include <optional>
@@ -34,10 +34,10 @@ struct EmbeddedIndices {
 const EmbeddedIndices& default_grain_indices();
 
 // fnv1a64 of index_cache_key(spec).
-std::uint64_t index_key_hash(const DirectShearSpec& spec);
+std::uint64_t index_key_hash(const LabSpec& spec);
 
 // The embedded record when spec's index inputs are the ones it was measured
 // for; nullopt otherwise.
-std::optional<EmbeddedIndices> embedded_index_densities(const DirectShearSpec& spec);
+std::optional<EmbeddedIndices> embedded_index_densities(const LabSpec& spec);
 
 }  // namespace grainlab

@@ -12,8 +12,8 @@
 
 namespace grainlab {
 
-nlohmann::json spec_to_json(const DirectShearSpec& spec_in) {
-  DirectShearSpec spec = spec_in;  // the field refs need a mutable spec
+nlohmann::json spec_to_json(const LabSpec& spec_in) {
+  LabSpec spec = spec_in;  // the field refs need a mutable spec
   nlohmann::json j = nlohmann::json::object();
   for (const SpecField& f : spec_fields()) {
     nlohmann::json& slot = f.table.empty() ? j[std::string(f.key)] : j[std::string(f.table)][std::string(f.key)];

@@ -2,7 +2,7 @@
 // object with the same keys as the TOML config, and an atomic writer.
 #pragma once
 
-#include "lab/direct_shear_spec.h"
+#include "lab/lab_spec.h"
 
 #include <nlohmann/json.hpp>
 
@@ -11,7 +11,7 @@
 namespace grainlab {
 
 // The spec as {"seed": ..., "grains": {...}, "material": {...}, ...}, keys as in the config file.
-nlohmann::json spec_to_json(const DirectShearSpec& spec);
+nlohmann::json spec_to_json(const LabSpec& spec);
 
 // Writes j (pretty-printed, 2-space indent, trailing newline) to path atomically (RunError on failure).
 void write_json_file(const std::filesystem::path& path, const nlohmann::json& j);

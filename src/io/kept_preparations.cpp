@@ -5,7 +5,7 @@
 #include "io/checkpoint.h"
 #include "io/json.h"
 #include "io/preparation_files.h"
-#include "lab/direct_shear.h"
+#include "lab/preparation.h"
 
 #include <fmt/format.h>
 
@@ -25,16 +25,14 @@ std::uint64_t hash_text(const std::string& text) {
 
 }  // namespace
 
-std::uint64_t kept_preparation_key(const std::string& name, const DirectShearSpec& prepared) {
+std::uint64_t kept_preparation_key(const std::string& name, const LabSpec& prepared) {
   if (name.starts_with("index_"))
     return hash_text(index_cache_key(prepared) + spec_to_json(prepared)["box"].dump() +
                      fmt::format("{:a}", prepared.specimen.deposition_friction));
-  DirectShearSpec s = prepared;
-  s.output = DirectShearSpec{}.output;
+  LabSpec s = prepared;
+  s.output = LabSpec{}.output;
   s.numerics.threads = 0;
-  s.shear = DirectShearSpec{}.shear;
-  s.oedometer = DirectShearSpec{}.oedometer;
-  s.triaxial = DirectShearSpec{}.triaxial;
+  s.reset_test_settings();  // the loading: every test's own table
   return config_hash(s);
 }
 
@@ -57,26 +55,26 @@ KeptPreparations::KeptPreparations(fs::path folder, std::function<bool()> stop)
 
 fs::path KeptPreparations::file(const std::string& name) const { return folder_ / (name + ".bin"); }
 
-double KeptPreparations::restore(DirectShearTest& test, const std::string& name, const DirectShearSpec& prepared) {
+double KeptPreparations::restore(SpecimenPreparation& preparation, const std::string& name, const LabSpec& prepared) {
   const fs::path f = file(name);
   if (!fs::exists(f)) return -1;
   Checkpoint ck = load_checkpoint(f);
-  if (ck.config_hash != kept_preparation_key(name, prepared) || !same_grains(ck, test.world().model)) return -1;
+  if (ck.config_hash != kept_preparation_key(name, prepared) || !same_grains(ck, preparation.world().model)) return -1;
   ByteReader in(ck.protocol, f.string());
   const double wall_s = in.f64();
-  test.world().state = std::move(ck.state);
-  test.load(in.raw(in.left()));
+  preparation.world().state = std::move(ck.state);
+  preparation.load(in.raw(in.left()));
   return wall_s;
 }
 
-void KeptPreparations::keep(const DirectShearTest& test, const std::string& name, const DirectShearSpec& prepared,
+void KeptPreparations::keep(const SpecimenPreparation& preparation, const std::string& name, const LabSpec& prepared,
                             double wall_s) {
   ByteWriter protocol;
   protocol.f64(wall_s);
-  protocol.raw(test.save());
+  protocol.raw(preparation.save());
   fs::create_directories(folder_);
-  save_checkpoint(file(name), test.world().state, protocol.bytes, kept_preparation_key(name, prepared),
-                  grains_fingerprint(test.world().model));
+  save_checkpoint(file(name), preparation.world().state, protocol.bytes, kept_preparation_key(name, prepared),
+                  grains_fingerprint(preparation.world().model));
 }
 
 void KeptPreparations::drop(const std::string& name) {

@@ -9,9 +9,9 @@
 // depends on: for an index preparation, index_cache_key of its spec (seed,
 // grains, material, stress, numerics but threads) plus its box and
 // deposition friction; for a trial, the whole config but the output, the
-// thread count and the loading (shear, oedometer, triaxial). Its protocol
+// thread count and the loading (every lab test's own table). Its protocol
 // bytes are the wall seconds spent so far (f64) followed by the
-// DirectShearTest's own bytes. A file with another key, or written for
+// SpecimenPreparation's own bytes (lab/preparation.h). A file with another key, or written for
 // other grains (checkpoint.h, grains_fingerprint), is left alone and
 // written over by the next keep.
 //
@@ -32,8 +32,8 @@ class KeptPreparations final : public PreparationStore {
   // Files in `folder`; `stop` (may be empty) says when to stop.
   explicit KeptPreparations(std::filesystem::path folder, std::function<bool()> stop = {});
 
-  double restore(DirectShearTest& test, const std::string& name, const DirectShearSpec& prepared) override;
-  void keep(const DirectShearTest& test, const std::string& name, const DirectShearSpec& prepared,
+  double restore(SpecimenPreparation& preparation, const std::string& name, const LabSpec& prepared) override;
+  void keep(const SpecimenPreparation& preparation, const std::string& name, const LabSpec& prepared,
             double wall_s) override;
   void drop(const std::string& name) override;
   bool stop_requested() const override { return stop_ && stop_(); }
@@ -47,7 +47,7 @@ class KeptPreparations final : public PreparationStore {
 };
 
 // The key above.
-std::uint64_t kept_preparation_key(const std::string& name, const DirectShearSpec& prepared);
+std::uint64_t kept_preparation_key(const std::string& name, const LabSpec& prepared);
 
 // Whether a file name is that of a kept preparation (index_e_min_seed7.bin,
 // trial_friction_0.02990000.bin); `trials_only`: of a trial.

@@ -7,7 +7,7 @@
 
 namespace grainlab {
 
-std::string index_cache_key(const DirectShearSpec& spec) {
+std::string index_cache_key(const LabSpec& spec) {
   const nlohmann::json all = spec_to_json(spec);
   nlohmann::json key;
   key["seed"] = all["seed"];
@@ -47,7 +47,7 @@ std::vector<IndexPreparation> preparations_from_json(const nlohmann::json& a) {
 }
 
 // The file's JSON when its key matches spec's and it is finished (or not); null otherwise.
-nlohmann::json matching_index_file(const std::filesystem::path& file, const DirectShearSpec& spec, bool finished) {
+nlohmann::json matching_index_file(const std::filesystem::path& file, const LabSpec& spec, bool finished) {
   if (!std::filesystem::exists(file)) return nullptr;
   nlohmann::json j = read_json_file(file);
   if (!j.contains("key") || j["key"] != index_cache_key(spec)) return nullptr;
@@ -83,13 +83,13 @@ nlohmann::json to_json(const std::vector<PreparationTrial>& trials) {
 }
 
 std::optional<std::pair<double, double>> cached_index_densities(const std::filesystem::path& file,
-                                                                const DirectShearSpec& spec) {
+                                                                const LabSpec& spec) {
   const nlohmann::json j = matching_index_file(file, spec, true);
   if (j.is_null()) return std::nullopt;
   return std::make_pair(j["e_min"].get<double>(), j["e_max"].get<double>());
 }
 
-IndexDensities unfinished_index_densities(const std::filesystem::path& file, const DirectShearSpec& spec) {
+IndexDensities unfinished_index_densities(const std::filesystem::path& file, const LabSpec& spec) {
   IndexDensities d;
   const nlohmann::json j = matching_index_file(file, spec, false);
   if (j.is_null()) return d;
@@ -98,7 +98,7 @@ IndexDensities unfinished_index_densities(const std::filesystem::path& file, con
   return d;
 }
 
-void write_index_densities(const std::filesystem::path& file, const DirectShearSpec& spec, const IndexDensities& d,
+void write_index_densities(const std::filesystem::path& file, const LabSpec& spec, const IndexDensities& d,
                            bool finished) {
   nlohmann::json j = to_json(d);
   if (!finished) {

@@ -17,7 +17,7 @@ namespace grainlab {
 
 // The inputs the own indices depend on (grains, material, consolidation
 // stress, numerics, seed) as one JSON string.
-std::string index_cache_key(const DirectShearSpec& spec);
+std::string index_cache_key(const LabSpec& spec);
 
 nlohmann::json to_json(const IndexDensities& d);
 nlohmann::json to_json(const std::vector<PreparationTrial>& trials);
@@ -25,17 +25,17 @@ nlohmann::json to_json(const std::vector<PreparationTrial>& trials);
 // e_min, e_max from a finished index_densities.json whose key matches
 // spec's; nullopt otherwise.
 std::optional<std::pair<double, double>> cached_index_densities(const std::filesystem::path& file,
-                                                                const DirectShearSpec& spec);
+                                                                const LabSpec& spec);
 
 // The preparations of an unfinished index_densities.json whose key matches
 // spec's (to pass to measure_index_densities as `done`); empty lists
 // otherwise.
-IndexDensities unfinished_index_densities(const std::filesystem::path& file, const DirectShearSpec& spec);
+IndexDensities unfinished_index_densities(const std::filesystem::path& file, const LabSpec& spec);
 
 // Writes index_densities.json (with the key). finished = false writes the
 // preparations made so far, marked "finished": false and without e_min and
 // e_max, which cached_index_densities does not take.
-void write_index_densities(const std::filesystem::path& file, const DirectShearSpec& spec, const IndexDensities& d,
+void write_index_densities(const std::filesystem::path& file, const LabSpec& spec, const IndexDensities& d,
                            bool finished = true);
 
 }  // namespace grainlab

@@ -12,7 +12,8 @@ State shear_reference_state(const LabTest& test) {
 }
 
 analysis::BandInputs band_inputs(const LabTest& test) {
-  const BandGeometry g = test.band_geometry();
+  const std::optional<BandGeometry> own = test.band_geometry();
+  const BandGeometry g = own ? *own : whole_specimen_band_geometry(test.world());
   return {g.z_min, g.z_max, g.layer, g.strain, g.length, g.direction};
 }
 

@@ -4,6 +4,7 @@
 // when grains.representation asks for it.
 #include "lab/grain_library.h"
 
+#include "core/parallel.h"
 #include "geometry/convex_hull.h"
 #include "geometry/mass_properties.h"
 #include "grains/grain_set.h"
@@ -30,22 +31,23 @@ GrainSet make_grain_set(const GrainsSpec& spec, std::uint64_t seed) {
 
 std::vector<Index> add_mesh_shapes(Model& model, const std::vector<TriMesh>& meshes,
                                    const std::vector<std::string>& names, bool spheres,
-                                   const std::string& representation, GrainRepresentation* report) {
+                                   const std::string& representation, int threads, GrainRepresentation* report) {
   const int n = static_cast<int>(meshes.size());
   // Decompose first (in parallel: a 2000-face grain takes about 2 s), then add in order.
   std::vector<ConvexDecomposition> pieces(n);
   std::vector<char> concave(n, 0);
   if (!spheres) {
-#pragma omp parallel for schedule(dynamic)
-    for (int k = 0; k < n; ++k) {
-      concave[k] = collides_as_pieces(representation, convexity(meshes[k]));
-      if (concave[k]) {
-        DecompositionOptions o;
-        o.max_pieces = kMaxCompoundPieces;
-        pieces[k] = decompose_convex(meshes[k], o);
-        if (pieces[k].pieces.size() == 1) concave[k] = 0;  // convex after all: the hull path
-      }
-    }
+    parallel_for(
+        n,
+        [&](std::ptrdiff_t k) {
+          concave[k] = collides_as_pieces(representation, convexity(meshes[k]));
+          if (!concave[k]) return;
+          DecompositionOptions o;
+          o.max_pieces = kMaxCompoundPieces;
+          pieces[k] = decompose_convex(meshes[k], o);
+          if (pieces[k].pieces.size() == 1) concave[k] = 0;  // convex after all: the hull path
+        },
+        1, threads);
   }
   GrainRepresentation r;
   std::vector<Index> shapes;
@@ -72,10 +74,10 @@ std::vector<Index> add_mesh_shapes(Model& model, const std::vector<TriMesh>& mes
   return shapes;
 }
 
-std::vector<Index> add_grain_shapes(Model& model, const GrainsSpec& spec, std::uint64_t seed,
+std::vector<Index> add_grain_shapes(Model& model, const GrainsSpec& spec, std::uint64_t seed, int threads,
                                     GrainRepresentation* report) {
   const GrainSet set = make_grain_set(spec, seed);
-  return add_mesh_shapes(model, set.meshes, set.names, set.spheres, spec.representation, report);
+  return add_mesh_shapes(model, set.meshes, set.names, set.spheres, spec.representation, threads, report);
 }
 
 }  // namespace grainlab

@@ -4,7 +4,7 @@
 #include "dynamics/model.h"
 #include "geometry/convex_decomposition.h"
 #include "grains/grain_set.h"
-#include "lab/direct_shear_spec.h"
+#include "lab/lab_spec.h"
 
 #include <string>
 #include <vector>
@@ -30,16 +30,19 @@ GrainSet make_grain_set(const GrainsSpec& spec, std::uint64_t seed);
 
 // Adds one shape per mesh (scale 1, meshes in metres) to `model`: analytic
 // spheres of equal volume if `spheres`; else the hull, or convex pieces
-// where `representation` asks for them (decomposed in parallel).
+// where `representation` asks for them (decomposed in parallel on `threads`
+// threads, core/parallel.h; 0 = all cores).
 std::vector<Index> add_mesh_shapes(Model& model, const std::vector<TriMesh>& meshes,
                                    const std::vector<std::string>& names, bool spheres,
-                                   const std::string& representation, GrainRepresentation* report = nullptr);
+                                   const std::string& representation, int threads,
+                                   GrainRepresentation* report = nullptr);
 
 // Adds spec.shapes grain shapes (generated from the preset, or imported from
 // the folder) at their physical size to `model`, and returns their indices.
 // Glass beads become analytic spheres; concave grains (spec.representation)
-// become convex pieces with the exact mesh's mass properties.
-std::vector<Index> add_grain_shapes(Model& model, const GrainsSpec& spec, std::uint64_t seed,
+// become convex pieces with the exact mesh's mass properties (decomposed on
+// `threads` threads, as add_mesh_shapes).
+std::vector<Index> add_grain_shapes(Model& model, const GrainsSpec& spec, std::uint64_t seed, int threads,
                                     GrainRepresentation* report = nullptr);
 
 }  // namespace grainlab

@@ -3,7 +3,7 @@
 
 #include "core/error.h"
 #include "core/timer.h"
-#include "lab/direct_shear.h"
+#include "lab/preparation.h"
 #include "lab/packing_density.h"
 
 #include <algorithm>
@@ -18,13 +18,13 @@ bool IndexDensities::settled() const {
   return true;
 }
 
-DirectShearSpec index_preparation_spec(const DirectShearSpec& spec, const IndexDensityOptions& o, bool dense,
+LabSpec index_preparation_spec(const LabSpec& spec, const IndexDensityOptions& o, bool dense,
                                        std::uint64_t seed) {
   if (o.box_diameters < 4 || o.height_diameters < 4)
     input_error("index densities: a box of {} x {} grain diameters is too small to have a bulk away from the "
                 "walls; use at least 4 (10 or more for the material's index voids)",
                 o.box_diameters, o.height_diameters);
-  DirectShearSpec s = spec;
+  LabSpec s = spec;
   s.seed = seed;
   s.box.length = s.box.width = o.box_diameters * spec.grains.d_max;
   s.box.height = o.height_diameters * spec.grains.d_max;
@@ -39,13 +39,12 @@ std::string index_preparation_name(bool dense, std::uint64_t seed) {
   return fmt::format("index_{}_seed{}", dense ? "e_min" : "e_max", seed);
 }
 
-IndexPreparation prepare_index_specimen(const DirectShearSpec& spec, const IndexDensityOptions& o, bool dense,
+IndexPreparation prepare_index_specimen(const LabSpec& spec, const IndexDensityOptions& o, bool dense,
                                         std::uint64_t seed, const IndexProgress& progress,
                                         PreparationStore* store) {
-  const DirectShearSpec s = index_preparation_spec(spec, o, dense, seed);
-  DirectShearTest t(s);
+  const LabSpec s = index_preparation_spec(spec, o, dense, seed);
+  SpecimenPreparation t(s);
   t.accept_any_density();
-  t.world().settings.threads = spec.numerics.threads;
   const char* name = dense ? "e_min" : "e_max";
   const std::string kept = index_preparation_name(dense, seed);
   World& w = t.world();
@@ -58,7 +57,7 @@ IndexPreparation prepare_index_specimen(const DirectShearSpec& spec, const Index
     earlier_s = std::max(earlier_s, 0.0);
   }
   Stopwatch clock, since_kept;
-  const ShearPhase goal = dense ? ShearPhase::Consolidate : ShearPhase::Compact;
+  const PreparationPhase goal = dense ? PreparationPhase::Consolidate : PreparationPhase::Compact;
   const std::int64_t cap = std::min<std::int64_t>(o.max_steps, 399000);
   std::int64_t next_line = (w.state.step / 10000 + 1) * 10000;
   while (t.phase() < goal && w.state.step - t.phase_step(t.phase()) < cap) {
@@ -83,7 +82,7 @@ IndexPreparation prepare_index_specimen(const DirectShearSpec& spec, const Index
   p.grains = static_cast<int>(w.model.bodies.size());
   const double d = t.mean_diameter(), L = s.box.length;
   double top = 0;  // the cap, or the highest grain top when there is none yet
-  if (dense && t.phase() >= ShearPhase::Compact) {
+  if (dense && t.phase() >= PreparationPhase::Compact) {
     top = w.state.walls[Cap].x.z();
   } else {
     for (std::size_t i = 0; i < w.model.bodies.size(); ++i)
@@ -96,7 +95,7 @@ IndexPreparation prepare_index_specimen(const DirectShearSpec& spec, const Index
   return p;
 }
 
-IndexDensities measure_index_densities(const DirectShearSpec& spec, const IndexDensityOptions& o,
+IndexDensities measure_index_densities(const LabSpec& spec, const IndexDensityOptions& o,
                                        const IndexProgress& progress, IndexDensities done,
                                        const IndexPreparationDone& on_done, PreparationStore* store) {
   if (o.seeds < 1) input_error("index densities: seeds = {}; use at least 1 (3 to see the spread)", o.seeds);

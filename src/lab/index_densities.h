@@ -32,7 +32,7 @@
 // where it was, to the same result bit for bit.
 #pragma once
 
-#include "lab/direct_shear_spec.h"
+#include "lab/lab_spec.h"
 #include "lab/preparation_search.h"
 #include "lab/preparation_store.h"
 
@@ -84,14 +84,14 @@ using IndexPreparationDone = std::function<void(const IndexDensities& so_far)>;
 // preparations already in `done` (dense, then loose, in seed order: what an
 // earlier, interrupted measurement passed to on_done) are kept, not made
 // again; the caller is responsible for their having the same inputs.
-IndexDensities measure_index_densities(const DirectShearSpec& spec, const IndexDensityOptions& options,
+IndexDensities measure_index_densities(const LabSpec& spec, const IndexDensityOptions& options,
                                        const IndexProgress& progress = {}, IndexDensities done = {},
                                        const IndexPreparationDone& on_done = {},
                                        PreparationStore* store = nullptr);
 
 // The direct shear spec of one preparation of the index box (its seed, box
 // and deposition friction); InputError for a box under 4 diameters.
-DirectShearSpec index_preparation_spec(const DirectShearSpec& spec, const IndexDensityOptions& options, bool dense,
+LabSpec index_preparation_spec(const LabSpec& spec, const IndexDensityOptions& options, bool dense,
                                        std::uint64_t seed);
 
 // The name a preparation is kept under: "index_e_min_seed7", "index_e_max_seed7".
@@ -101,7 +101,7 @@ std::string index_preparation_name(bool dense, std::uint64_t seed);
 // `progress` gets a line every 10,000 steps (phase, step, its status): a
 // dense preparation of faceted grains can take hours. With a store, it goes
 // on from what the store kept and keeps what it does (above).
-IndexPreparation prepare_index_specimen(const DirectShearSpec& spec, const IndexDensityOptions& options,
+IndexPreparation prepare_index_specimen(const LabSpec& spec, const IndexDensityOptions& options,
                                         bool dense, std::uint64_t seed, const IndexProgress& progress = {},
                                         PreparationStore* store = nullptr);
 

@@ -1,8 +1,10 @@
-// The registry of lab tests: one line per test.
+// The registry of lab tests: one line per built-in test (lab_registry.h).
+#include "lab/lab_registry.h"
+
 #include "core/error.h"
 #include "lab/direct_shear.h"
-#include "lab/lab_test.h"
 #include "lab/oedometer.h"
+#include "lab/preparation.h"
 #include "lab/triaxial.h"
 
 #include <fmt/format.h>
@@ -12,35 +14,45 @@ namespace grainlab {
 
 namespace {
 
-using Factory = std::unique_ptr<LabTest> (*)(const DirectShearSpec&);
-
-template <typename Test>
-std::unique_ptr<LabTest> make(const DirectShearSpec& spec) {
-  return std::make_unique<Test>(spec);
+std::vector<LabTestEntry>& entries() {
+  static std::vector<LabTestEntry> tests = [] {
+    std::vector<LabTestEntry> builtin = {
+        lab_test_entry<DirectShearTest>("direct-shear"),
+        lab_test_entry<OedometerTest>("oedometer"),
+        lab_test_entry<TriaxialTest>("triaxial"),
+    };
+    for (LabTestEntry& e : builtin) e.keys.table.test = e.name;
+    return builtin;
+  }();
+  return tests;
 }
-
-struct Entry {
-  const char* name;
-  Factory factory;
-};
-
-constexpr Entry kTests[] = {
-    {"direct-shear", &make<DirectShearTest>},
-    {"oedometer", &make<OedometerTest>},
-    {"triaxial", &make<TriaxialTest>},
-};
 
 }  // namespace
 
-std::unique_ptr<LabTest> make_lab_test(const std::string& name, const DirectShearSpec& spec) {
-  for (const Entry& e : kTests)
-    if (name == e.name) return e.factory(spec);
+void register_lab_test(LabTestEntry entry) {
+  for (const LabTestEntry& e : entries())
+    if (e.name == entry.name || e.keys.table.name == entry.keys.table.name)
+      input_error("lab test '{}' (table [{}]) is registered already", entry.name, entry.keys.table.name);
+  entry.keys.table.test = entry.name;
+  entries().push_back(std::move(entry));
+}
+
+const std::vector<LabTestEntry>& lab_test_entries() { return entries(); }
+
+std::unique_ptr<LabTest> make_lab_test(const std::string& name, const LabSpec& spec,
+                                       std::unique_ptr<SpecimenPreparation> prepared) {
+  for (const LabTestEntry& e : entries())
+    if (name == e.name) return e.factory(spec, std::move(prepared));
   input_error("unknown lab test '{}': the registered tests are {}", name, fmt::join(lab_test_names(), ", "));
+}
+
+std::unique_ptr<LabTest> make_lab_test(const std::string& name, const LabSpec& spec) {
+  return make_lab_test(name, spec, nullptr);
 }
 
 std::vector<std::string> lab_test_names() {
   std::vector<std::string> names;
-  for (const Entry& e : kTests) names.emplace_back(e.name);
+  for (const LabTestEntry& e : entries()) names.emplace_back(e.name);
   return names;
 }
 

@@ -1,5 +1,5 @@
-// LabTest: what io and apps see of a virtual lab test (direct shear today;
-// oedometer, triaxial next), so that they never name a concrete test.
+// LabTest: what io and apps see of a virtual lab test (direct shear,
+// oedometer, triaxial), so that they never name a concrete test.
 //
 // A test owns its World and steps it in phases (preparation, then a measured
 // loading phase). It records one series row per sample during loading, keeps
@@ -13,11 +13,12 @@
 #pragma once
 
 #include "dynamics/world.h"
-#include "lab/direct_shear_spec.h"
+#include "lab/lab_spec.h"
 
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -50,7 +51,7 @@ class LabTest {
   virtual ~LabTest() = default;
 
   // The run's settings.
-  virtual const DirectShearSpec& spec() const = 0;
+  virtual const LabSpec& spec() const = 0;
   // The simulated World (read the State and Model; a restore writes the State).
   virtual World& world() = 0;
   virtual const World& world() const = 0;
@@ -94,8 +95,11 @@ class LabTest {
   // Specimen volume (m^3) and the stress the boundary holds (Pa) now.
   virtual double specimen_volume() const = 0;
   virtual double boundary_stress() const = 0;
-  // Shear band binning of the current state (see BandGeometry).
-  virtual BandGeometry band_geometry() const = 0;
+  // Shear band binning of the current state (see BandGeometry), for a test
+  // that imposes a displacement (the direct shear; the oedometer and the
+  // triaxial test give theirs for the record); none by default: io then bins
+  // the whole specimen (whole_specimen_band_geometry).
+  virtual std::optional<BandGeometry> band_geometry() const { return std::nullopt; }
 
   // The protocol's own state (the World's State is saved separately).
   virtual std::vector<std::uint8_t> save() const = 0;
@@ -103,9 +107,21 @@ class LabTest {
   virtual void load(std::span<const std::uint8_t> bytes) = 0;
 };
 
+class SpecimenPreparation;
+
+// The band binning of a test without one (LabTest::band_geometry): from the
+// floor to the highest grain's top now, layers of the grains' mean
+// volume-equivalent diameter, no imposed strain.
+BandGeometry whole_specimen_band_geometry(const World& world);
+
 // Makes the test registered under `name` ("direct-shear"); InputError naming
-// the registered tests if there is none.
-std::unique_ptr<LabTest> make_lab_test(const std::string& name, const DirectShearSpec& spec);
+// the registered tests if there is none. `prepared` (may be null): a
+// preparation of `spec` in its own box (the preparation search's trial),
+// which a test prepared in that box goes on from; a test prepared in
+// another box (the closed box of lab/closed_box_test.h) prepares its own.
+std::unique_ptr<LabTest> make_lab_test(const std::string& name, const LabSpec& spec);
+std::unique_ptr<LabTest> make_lab_test(const std::string& name, const LabSpec& spec,
+                                       std::unique_ptr<SpecimenPreparation> prepared);
 // Names of the registered tests.
 std::vector<std::string> lab_test_names();
 

@@ -16,8 +16,7 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr std::int64_t kMaxStageSteps = 400000;  // as the direct shear's phases
 
-// Column indices of oedometer_series_columns().
-enum Column { Time, Stage, Target, Vertical, FloorStress, Lateral, K0, Strain, Height, VoidRatio, Modulus };
+using C = OedometerColumn;
 
 }  // namespace
 
@@ -36,25 +35,25 @@ OedometerSummary summarise_oedometer(const std::vector<std::vector<double>>& all
   // with M recomputed between them.
   std::vector<std::vector<double>> rows;
   for (std::size_t i = 0; i < all_rows.size(); ++i)
-    if (i + 1 == all_rows.size() || all_rows[i + 1][Stage] != all_rows[i][Stage]) rows.push_back(all_rows[i]);
+    if (i + 1 == all_rows.size() || all_rows[i + 1][C::Stage] != all_rows[i][C::Stage]) rows.push_back(all_rows[i]);
   for (std::size_t i = 0; i < rows.size(); ++i)
-    rows[i][Modulus] = i == 0 ? kNaN
-                              : (rows[i][Vertical] - rows[i - 1][Vertical]) / (rows[i][Strain] - rows[i - 1][Strain]);
+    rows[i][C::Modulus] = i == 0 ? kNaN
+                              : (rows[i][C::Vertical] - rows[i - 1][C::Vertical]) / (rows[i][C::Strain] - rows[i - 1][C::Strain]);
   if (rows.size() < 2) return s;
-  s.final_void_ratio = rows.back()[VoidRatio];
+  s.final_void_ratio = rows.back()[C::VoidRatio];
   // The largest stress and the loading increments before it (each above the last).
   std::size_t top = 0;
   for (std::size_t i = 1; i < rows.size(); ++i)
-    if (rows[i][Target] > rows[top][Target]) top = i;
-  s.max_stress = rows[top][Vertical];
-  s.k0_at_max_stress = rows[top][K0];
-  s.modulus_at_max_stress = rows[top][Modulus];
+    if (rows[i][C::Target] > rows[top][C::Target]) top = i;
+  s.max_stress = rows[top][C::Vertical];
+  s.k0_at_max_stress = rows[top][C::K0];
+  s.modulus_at_max_stress = rows[top][C::Modulus];
   const auto index = [&](std::size_t a, std::size_t b) {  // -de / dlog10(sigma) from row a to row b
-    return -(rows[b][VoidRatio] - rows[a][VoidRatio]) / std::log10(rows[b][Vertical] / rows[a][Vertical]);
+    return -(rows[b][C::VoidRatio] - rows[a][C::VoidRatio]) / std::log10(rows[b][C::Vertical] / rows[a][C::Vertical]);
   };
   std::size_t first_unload = rows.size();
   for (std::size_t i = 1; i < rows.size(); ++i)
-    if (rows[i][Target] < rows[i - 1][Target]) {
+    if (rows[i][C::Target] < rows[i - 1][C::Target]) {
       first_unload = i;
       break;
     }
@@ -62,22 +61,22 @@ OedometerSummary summarise_oedometer(const std::vector<std::vector<double>>& all
   s.compression_index = last_load >= 1 ? index(last_load - 1, last_load) : kNaN;
   // Unloading branch after the largest stress: down to its lowest stress.
   std::size_t low = top;
-  for (std::size_t i = top + 1; i < rows.size() && rows[i][Target] < rows[i - 1][Target]; ++i) low = i;
+  for (std::size_t i = top + 1; i < rows.size() && rows[i][C::Target] < rows[i - 1][C::Target]; ++i) low = i;
   if (low > top) s.swelling_index = index(top, low);
   // n of M ~ sigma^n: least squares of log M on the log mean stress of each
   // loading increment but the first, which starts from the preparation's
   // stress state (K0 0.73-0.90 after consolidation) and rearranges it.
   LineFit fit;
   for (std::size_t i = 2; i <= last_load; ++i) {
-    const double m = rows[i][Modulus];
-    if (m > 0) fit.add(std::log(0.5 * (rows[i][Vertical] + rows[i - 1][Vertical])), std::log(m));
+    const double m = rows[i][C::Modulus];
+    if (m > 0) fit.add(std::log(0.5 * (rows[i][C::Vertical] + rows[i - 1][C::Vertical])), std::log(m));
   }
   s.modulus_stress_exponent = fit.slope();  // NaN below two increments
   return s;
 }
 
-OedometerTest::OedometerTest(const DirectShearSpec& spec)
-    : ClosedBoxTest(spec), constant_rate_(spec.oedometer.loading == "constant-rate") {
+OedometerTest::OedometerTest(const LabSpec& spec)
+    : ClosedBoxTest(spec), constant_rate_(spec.settings<OedometerSpec>().loading == "constant-rate") {
   // Runs after the preparation's servo, which is idle once it is done.
   world().add_controller([this](World& w, double dt) {
     if (p_.phase == OedometerPhase::Load && !constant_rate()) servo_.control(w, dt);
@@ -85,7 +84,7 @@ OedometerTest::OedometerTest(const DirectShearSpec& spec)
 }
 
 double OedometerTest::stage_stress(int stage) const {
-  return stage == 0 ? spec_.consolidation.normal_stress : spec_.oedometer.stresses[static_cast<std::size_t>(stage - 1)];
+  return stage == 0 ? spec_.consolidation.normal_stress : spec_.settings<OedometerSpec>().stresses[static_cast<std::size_t>(stage - 1)];
 }
 
 double OedometerTest::cap_height() const { return world().state.walls[Cap].x.z(); }
@@ -114,12 +113,12 @@ double OedometerTest::specimen_volume() const { return area() * cap_height(); }
 
 int OedometerTest::phase_index() const {
   // deposit 0, compact 1, consolidate 2 (the preparation's), load 3, done 4.
-  return p_.phase == OedometerPhase::Prepare ? prep_.phase_index() : 2 + static_cast<int>(p_.phase);
+  return p_.phase == OedometerPhase::Prepare ? static_cast<int>(prep_->phase()) : 2 + static_cast<int>(p_.phase);
 }
 
 std::string OedometerTest::phase_name() const {
   switch (p_.phase) {
-    case OedometerPhase::Prepare: return prep_.phase_name();
+    case OedometerPhase::Prepare: return prep_->phase_name();
     case OedometerPhase::Load: return "load";
     case OedometerPhase::Done: return "done";
   }
@@ -163,7 +162,7 @@ void OedometerTest::set_cap_speed() {
   // I = (v / H_0) d sqrt(rho S / sigma_0) at the consolidation stress sigma_0.
   const double rho = spec_.material.grain.density * world().model.density_scale;
   cap_speed_ = spec_.numerics.inertial_number * p_.height_at_load /
-               (prep_.mean_diameter() * std::sqrt(rho / stage_stress(0)));
+               (prep_->mean_diameter() * std::sqrt(rho / stage_stress(0)));
 }
 
 bool OedometerTest::stage_reached() const {
@@ -213,7 +212,7 @@ bool OedometerTest::stage_at_rest() {
 bool OedometerTest::advance(int max_steps) {
   if (p_.phase == OedometerPhase::Done) return false;
   if (p_.phase == OedometerPhase::Prepare) {
-    if (!prep_.advance(max_steps)) start_loading();
+    if (prepare(max_steps)) start_loading();
     return true;  // a preparation phase ended, or the steps are done
   }
   if (constant_rate()) return advance_constant_rate(max_steps);
@@ -239,7 +238,7 @@ void OedometerTest::record_row() {
   double modulus = kNaN;
   if (!p_.rows.empty()) {
     const auto& prev = p_.rows.back();
-    modulus = (sv - prev[Vertical]) / (eps - prev[Strain]);
+    modulus = (sv - prev[C::Vertical]) / (eps - prev[C::Strain]);
   }
   const double sh = lateral_stress();
   std::vector<double> row = {w.state.time,
@@ -253,7 +252,7 @@ void OedometerTest::record_row() {
                              cap_height(),
                              void_ratio(),
                              modulus,
-                             prep_.coordination_number(),
+                             prep_->coordination_number(),
                              w.kinetic_energy(),
                              unbalanced_force_ratio(w)};
   observe(row);
@@ -262,7 +261,7 @@ void OedometerTest::record_row() {
 }
 
 std::vector<SummaryValue> OedometerTest::summary() const {
-  std::vector<SummaryValue> v = preparation_summary();
+  std::vector<SummaryValue> v = prep_->summary();
   const OedometerSummary o = summarise_oedometer(p_.rows);
   v.push_back({"oedometer", "compression_index", o.compression_index});
   v.push_back({"oedometer", "swelling_index", o.swelling_index});
@@ -275,7 +274,7 @@ std::vector<SummaryValue> OedometerTest::summary() const {
 }
 
 std::string OedometerTest::status_line() const {
-  if (p_.phase == OedometerPhase::Prepare) return prep_.status_line();
+  if (p_.phase == OedometerPhase::Prepare) return prep_->status_line();
   return fmt::format("stage {}/{}  target {:.1f} kPa  sigma_v {:.1f} kPa  K0 {:.3f}  strain {:.5f}  e {:.4f}",
                      p_.stage, stages(), stage_stress(p_.stage) * 1e-3, vertical_stress() * 1e-3,
                      vertical_stress() > 0 ? lateral_stress() / vertical_stress() : 0.0, vertical_strain(),
@@ -283,12 +282,12 @@ std::string OedometerTest::status_line() const {
 }
 
 std::string OedometerTest::phase_note() const {
-  if (p_.phase == OedometerPhase::Prepare) return prep_.phase_note();
+  if (p_.phase == OedometerPhase::Prepare) return prep_->phase_note();
   if (p_.phase != OedometerPhase::Load || p_.rows.empty()) return "";
   const std::string how = constant_rate() ? fmt::format("at a constant cap speed of {:.3g} mm/s", cap_speed_ * 1e3)
                                            : std::string("each held to rest");
   return fmt::format("consolidated under {:.0f} kPa: e = {:.4f}, K0 = {:.3f}; now {} stages, {}",
-                     stage_stress(0) * 1e-3, p_.rows.front()[VoidRatio], p_.rows.front()[K0], stages(), how);
+                     stage_stress(0) * 1e-3, p_.rows.front()[C::VoidRatio], p_.rows.front()[C::K0], stages(), how);
 }
 
 std::string OedometerTest::result_line() const {
@@ -299,12 +298,12 @@ std::string OedometerTest::result_line() const {
                      o.modulus_at_max_stress * 1e-6, o.modulus_stress_exponent);
 }
 
-BandGeometry OedometerTest::band_geometry() const {
+std::optional<BandGeometry> OedometerTest::band_geometry() const {
   // No imposed shear: a profile of horizontal displacement, for the record.
   BandGeometry b;
   b.z_min = 0;
   b.z_max = p_.phase == OedometerPhase::Prepare ? cap_height() : p_.height_at_load;
-  b.layer = prep_.mean_diameter();
+  b.layer = prep_->mean_diameter();
   b.direction = Vec3::UnitX();
   b.strain = 0;
   b.length = spec_.box.length;
@@ -313,7 +312,7 @@ BandGeometry OedometerTest::band_geometry() const {
 
 std::vector<std::uint8_t> OedometerTest::save() const {
   ByteWriter b;
-  save_preparation(b);
+  prep_->save(b);
   b.i32(static_cast<std::int32_t>(p_.phase));
   b.i32(p_.stage);
   b.f64(p_.height_at_load), b.f64(p_.last_row_stress);
@@ -328,7 +327,7 @@ std::vector<std::uint8_t> OedometerTest::save() const {
 
 void OedometerTest::load(std::span<const std::uint8_t> bytes) {
   ByteReader r(bytes, "the oedometer protocol state", " Start the run again without --resume.");
-  load_preparation(r);
+  prep_->load(r);
   const std::int32_t phase = r.i32();
   if (phase < 0 || phase > static_cast<int>(OedometerPhase::Done)) r.corrupted("an unknown phase");
   p_.phase = static_cast<OedometerPhase>(phase);

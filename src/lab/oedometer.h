@@ -3,8 +3,9 @@
 // material.wall_friction, under a schedule of cap stresses.
 //
 // Box and preparation (lab/closed_box_test.h): the direct shear box with its
-// gap closed, a rigid ring of L x W, and the direct shear protocol's deposit,
-// compact and consolidate phases under consolidation.normal_stress.
+// gap closed, a rigid ring of L x W, and the specimen preparation's deposit,
+// compact and consolidate phases (lab/preparation.h) under
+// consolidation.normal_stress.
 //
 // Loading (phase "load"): the cap's servo (lab/stress_servo.h, integral
 // reset at each stage) holds each stress of oedometer.stresses in turn until
@@ -61,6 +62,7 @@
 
 #include "lab/closed_box_test.h"
 #include "lab/rest_criteria.h"
+#include "lab/spec_keys.h"
 #include "lab/stress_servo.h"
 
 #include <cstdint>
@@ -69,10 +71,29 @@
 
 namespace grainlab {
 
+// The oedometer's own settings (config table [oedometer]): after
+// consolidation under consolidation.normal_stress, the cap goes through the
+// schedule of stresses in order (a stress below the one before unloads):
+// with loading "stages" its servo holds each stress until the specimen is at
+// rest; with "constant-rate" it moves at a constant speed (from
+// numerics.inertial_number) until the cap stress reaches each stress, and
+// reverses to unload.
+struct OedometerSpec {
+  std::vector<double> stresses = {200e3, 400e3, 800e3, 400e3, 200e3, 100e3};  // Pa, in order
+  std::string loading = "stages";  // "stages" | "constant-rate"
+};
+
 enum class OedometerPhase : std::int32_t { Prepare = 0, Load = 1, Done = 2 };
 
 // Column names (with units) of the series: one row per stage at rest.
 const std::vector<std::string>& oedometer_series_columns();
+// Columns of oedometer_series_columns(), by name (rows[i][OedometerColumn::K0]).
+struct OedometerColumn {
+  enum : int {
+    Time, Stage, Target, Vertical, FloorStress, Lateral, K0, Strain, Height, VoidRatio, Modulus, Coordination,
+    KineticEnergy, UnbalancedForce
+  };
+};
 
 // What the oedometer's stage rows give (see the top of this file).
 struct OedometerSummary {
@@ -90,7 +111,9 @@ OedometerSummary summarise_oedometer(const std::vector<std::vector<double>>& row
 class OedometerTest final : public ClosedBoxTest {
  public:
   // Builds the preparation (the direct shear box with its gap closed).
-  explicit OedometerTest(const DirectShearSpec& spec);
+  explicit OedometerTest(const LabSpec& spec);
+  // Its config table [oedometer] (lab/spec_keys.h).
+  static LabTestKeys keys();
 
   // LabTest.
   bool advance(int max_steps) override;
@@ -113,20 +136,20 @@ class OedometerTest final : public ClosedBoxTest {
   std::vector<SummaryValue> summary() const override;
   double specimen_volume() const override;
   double boundary_stress() const override { return vertical_stress(); }
-  BandGeometry band_geometry() const override;
+  std::optional<BandGeometry> band_geometry() const override;
   std::vector<std::uint8_t> save() const override;
   void load(std::span<const std::uint8_t> bytes) override;
 
   // Oedometer measurements (definitions above).
   OedometerPhase phase() const { return p_.phase; }
   int stage() const { return p_.stage; }               // the stage held now (0: consolidation)
-  int stages() const { return static_cast<int>(spec_.oedometer.stresses.size()); }
+  int stages() const { return static_cast<int>(spec_.settings<OedometerSpec>().stresses.size()); }
   double stage_stress(int stage) const;                // Pa, stage 0: consolidation.normal_stress
   double vertical_stress() const;                      // Pa, on the cap
   double floor_stress() const;                         // Pa, on the floor
   double lateral_stress() const;                       // Pa, mean of the four side walls
   double vertical_strain() const;                      // since stage 0 (0 before)
-  double void_ratio() const { return prep_.void_ratio(); }
+  double void_ratio() const { return prep_->void_ratio(); }
 
  private:
   struct Progress {

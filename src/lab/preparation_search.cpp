@@ -21,11 +21,11 @@ double to_u(double mu) { return mu / (mu + kU); }
 double to_mu(double u) { return kU * u / (1 - u); }
 
 // e of a trial as the target judges it, and its Dr on the target's indices.
-double judged_void_ratio(const DirectShearSpec& spec, const DirectShearTest& t) {
+double judged_void_ratio(const LabSpec& spec, const SpecimenPreparation& t) {
   return spec.targets_own_indices() ? t.achieved_bulk_void_ratio() : t.achieved_void_ratio();
 }
 
-double judged_relative_density(const DirectShearSpec& spec, double e) {
+double judged_relative_density(const LabSpec& spec, double e) {
   const auto& s = spec.specimen;
   if (spec.targets_own_indices()) return (s.own_e_max - e) / (s.own_e_max - s.own_e_min);
   return (s.e_max - e) / (s.e_max - s.e_min);
@@ -35,15 +35,14 @@ double judged_relative_density(const DirectShearSpec& spec, double e) {
 
 std::string trial_preparation_name(double mu) { return fmt::format("trial_friction_{:.8f}", mu); }
 
-std::unique_ptr<DirectShearTest> trial_preparation(const DirectShearSpec& spec, double mu, PreparationTrial& out,
-                                                   PreparationStore* store,
-                                                   const std::function<void(const std::string&)>& said) {
-  DirectShearSpec s = spec;
+std::unique_ptr<SpecimenPreparation> trial_preparation(const LabSpec& spec, double mu, PreparationTrial& out,
+                                                       PreparationStore* store,
+                                                       const std::function<void(const std::string&)>& said) {
+  LabSpec s = spec;
   s.specimen.deposition_friction = mu;
   Stopwatch clock, since_kept;
-  auto t = std::make_unique<DirectShearTest>(s);
+  auto t = std::make_unique<SpecimenPreparation>(s);
   t->accept_any_density();
-  t->world().settings.threads = spec.numerics.threads;
   const std::string name = trial_preparation_name(mu);
   const double kept_s = store ? store->restore(*t, name, s) : -1.0;
   const double earlier_s = std::max(0.0, kept_s);
@@ -53,7 +52,7 @@ std::unique_ptr<DirectShearTest> trial_preparation(const DirectShearSpec& spec, 
   bool stepped = false;
   std::int64_t next_line = (t->world().state.step / 10000 + 1) * 10000;
   try {
-    while (t->phase() < ShearPhase::Consolidate) {
+    while (t->phase() < PreparationPhase::Consolidate) {
       t->advance(100);
       stepped = true;
       if (said && t->world().state.step >= next_line) {  // a trial of angular grains runs for hours
@@ -81,7 +80,7 @@ std::unique_ptr<DirectShearTest> trial_preparation(const DirectShearSpec& spec, 
   return t;
 }
 
-Preparation prepare_to_target(const DirectShearSpec& spec, const PreparationSearchOptions& o,
+Preparation prepare_to_target(const LabSpec& spec, const PreparationSearchOptions& o,
                               const PreparationProgress& progress) {
   if (spec.targets_own_indices() && !spec.own_indices_known())
     input_error("the preparation search needs the grains' own index void ratios for a Dr target on them: set "
@@ -112,13 +111,13 @@ Preparation prepare_to_target(const DirectShearSpec& spec, const PreparationSear
   double best_miss = std::numeric_limits<double>::infinity();
   std::string why;
   const TrialPreparation run_trial =
-      o.trial ? o.trial : [&](const DirectShearSpec& s, double mu, PreparationTrial& out) {
+      o.trial ? o.trial : [&](const LabSpec& s, double mu, PreparationTrial& out) {
         return trial_preparation(s, mu, out, o.store, progress);
       };
   double best_e = NAN;
   for (int k = 0; k < o.max_trials; ++k) {
     PreparationTrial trial;
-    std::unique_ptr<DirectShearTest> t;
+    std::unique_ptr<SpecimenPreparation> t;
     Stopwatch clock;
     try {
       t = run_trial(spec, to_mu(u), trial);
@@ -140,7 +139,7 @@ Preparation prepare_to_target(const DirectShearSpec& spec, const PreparationSear
                            std::isnan(trial.relative_density) ? "" : fmt::format(", Dr {:.3f}", trial.relative_density),
                            trial.steps, trial.wall_s));
     if (hit(trial)) {
-      p.test = std::move(t);
+      p.specimen = std::move(t);
       p.friction = trial.friction;
       return p;
     }

@@ -27,7 +27,7 @@
 // bracket's middle (another friction, another packing).
 #pragma once
 
-#include "lab/direct_shear.h"
+#include "lab/preparation.h"
 #include "lab/preparation_store.h"
 
 #include <cstdint>
@@ -67,10 +67,10 @@ struct PreparationTrial {
   std::string error;            // why the trial failed (a phase that did not come to rest); empty if it did not
 };
 
-// One trial preparation at deposition friction mu: the test after
+// One trial preparation at deposition friction mu: the preparation after
 // compaction, with `out` filled in; throws RunError if it fails.
-using TrialPreparation =
-    std::function<std::unique_ptr<DirectShearTest>(const DirectShearSpec& spec, double mu, PreparationTrial& out)>;
+using TrialPreparation = std::function<std::unique_ptr<SpecimenPreparation>(const LabSpec& spec, double mu,
+                                                                              PreparationTrial& out)>;
 
 struct PreparationSearchOptions {
   double max_friction = kLoosestSearchFriction;  // the loosest end of the search
@@ -80,29 +80,29 @@ struct PreparationSearchOptions {
 };
 
 struct Preparation {
-  std::unique_ptr<DirectShearTest> test;  // compacted at the chosen friction (phase Consolidate)
+  std::unique_ptr<SpecimenPreparation> specimen;  // compacted at the chosen friction (phase Consolidate)
   std::vector<PreparationTrial> trials;
   double friction = 0;                    // chosen
 };
 
 using PreparationProgress = std::function<void(const std::string&)>;
 
-// One trial preparation at deposition friction mu: the test after compaction.
+// One trial preparation at deposition friction mu: the preparation after compaction.
 // With a store it goes on from what the store kept of it (a finished one is
 // taken back at once), keeps it every store->keep_interval_s and when it
 // ends, and when the store asks to stop (every 100 steps) keeps it and
 // throws Stopped (core/error.h). A trial that fails is dropped.
 // `said` (may be empty) gets a line when the trial goes on from a kept one,
 // and one every 10,000 steps (step, phase, wall seconds, the test's status).
-std::unique_ptr<DirectShearTest> trial_preparation(const DirectShearSpec& spec, double mu, PreparationTrial& out,
-                                                   PreparationStore* store = nullptr,
-                                                   const std::function<void(const std::string&)>& said = {});
+std::unique_ptr<SpecimenPreparation> trial_preparation(const LabSpec& spec, double mu, PreparationTrial& out,
+                                                       PreparationStore* store = nullptr,
+                                                       const std::function<void(const std::string&)>& said = {});
 // The name a trial is kept under: "trial_friction_0.02990000".
 std::string trial_preparation_name(double mu);
 
 // The search above. spec.specimen.deposition_friction is ignored (the
 // search chooses it); own-index targets need the own indices known.
-Preparation prepare_to_target(const DirectShearSpec& spec, const PreparationSearchOptions& options = {},
+Preparation prepare_to_target(const LabSpec& spec, const PreparationSearchOptions& options = {},
                               const PreparationProgress& progress = {});
 
 }  // namespace grainlab

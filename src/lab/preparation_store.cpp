@@ -5,15 +5,15 @@
 
 namespace grainlab {
 
-void PreparationStore::keep_if_due(const DirectShearTest& test, const std::string& name,
-                                   const DirectShearSpec& prepared, double wall_s, Stopwatch& since_kept,
+void PreparationStore::keep_if_due(const SpecimenPreparation& preparation, const std::string& name,
+                                   const LabSpec& prepared, double wall_s, Stopwatch& since_kept,
                                    const std::function<std::string()>& stopped) {
   if (stop_requested()) {
-    keep(test, name, prepared, wall_s);
+    keep(preparation, name, prepared, wall_s);
     throw Stopped(stopped());
   }
   if (since_kept.seconds() < keep_interval_s) return;
-  keep(test, name, prepared, wall_s);
+  keep(preparation, name, prepared, wall_s);
   since_kept.reset();
 }
 

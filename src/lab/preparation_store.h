@@ -9,14 +9,14 @@
 #pragma once
 
 #include "core/timer.h"
-#include "lab/direct_shear_spec.h"
+#include "lab/lab_spec.h"
 
 #include <functional>
 #include <string>
 
 namespace grainlab {
 
-class DirectShearTest;
+class SpecimenPreparation;
 
 class PreparationStore {
  public:
@@ -24,12 +24,12 @@ class PreparationStore {
   // `name` names the preparation ("index_e_min_seed7", "trial_friction_0.02990000");
   // `prepared` is its own spec (seed, box, deposition friction...): what a
   // kept preparation must match.
-  // Restores `test` (State, then protocol) from what was kept of it, if
+  // Restores `preparation` (State, then its own bytes) from what was kept of it, if
   // that fits `prepared`; returns the wall seconds it had run, or a
   // negative number if nothing was restored.
-  virtual double restore(DirectShearTest& test, const std::string& name, const DirectShearSpec& prepared) = 0;
+  virtual double restore(SpecimenPreparation& preparation, const std::string& name, const LabSpec& prepared) = 0;
   // Keeps the preparation as it is now, after `wall_s` seconds in all.
-  virtual void keep(const DirectShearTest& test, const std::string& name, const DirectShearSpec& prepared,
+  virtual void keep(const SpecimenPreparation& preparation, const std::string& name, const LabSpec& prepared,
                     double wall_s) = 0;
   // What was kept of it can go.
   virtual void drop(const std::string& name) = 0;
@@ -42,7 +42,7 @@ class PreparationStore {
   // keeps it and throws Stopped(stopped()); else keeps it if
   // keep_interval_s has passed on `since_kept` (then reset). `wall_s` is
   // its wall seconds in all.
-  void keep_if_due(const DirectShearTest& test, const std::string& name, const DirectShearSpec& prepared,
+  void keep_if_due(const SpecimenPreparation& preparation, const std::string& name, const LabSpec& prepared,
                    double wall_s, Stopwatch& since_kept, const std::function<std::string()>& stopped);
 };
 

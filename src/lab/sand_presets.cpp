@@ -37,7 +37,7 @@ std::vector<std::string> sand_preset_names() {
   return names;
 }
 
-void apply_sand_preset(DirectShearSpec& spec, const std::string& name) {
+void apply_sand_preset(LabSpec& spec, const std::string& name) {
   for (const SandPreset& s : kSands) {
     if (s.name != name) continue;
     spec.material.preset = name;

@@ -4,7 +4,7 @@
 // and the synthetic grain shape class that stands for each sand.
 #pragma once
 
-#include "lab/direct_shear_spec.h"
+#include "lab/lab_spec.h"
 
 #include <string>
 #include <vector>
@@ -17,6 +17,6 @@ std::vector<std::string> sand_preset_names();
 // Overwrites the material, index void ratios, target Dr and grain shape preset
 // of `spec` with the named sand's values; sets spec.material.preset = name.
 // Throws InputError listing the valid names for an unknown name.
-void apply_sand_preset(DirectShearSpec& spec, const std::string& name);
+void apply_sand_preset(LabSpec& spec, const std::string& name);
 
 }  // namespace grainlab

@@ -12,11 +12,12 @@
 
 namespace grainlab {
 
-Specimen place_scanned_specimen(World& w, const DirectShearSpec& spec, Index grain_material) {
+Specimen place_scanned_specimen(World& w, const LabSpec& spec, Index grain_material) {
   const ScannedGrains scan = read_scanned_grains(spec.grains.scan, spec.grains.scan_border == "keep");
   Specimen sp;
   const std::vector<Index> shapes =
-      add_mesh_shapes(w.model, scan.meshes, scan.names, false, spec.grains.representation, &sp.representation);
+      add_mesh_shapes(w.model, scan.meshes, scan.names, false, spec.grains.representation,
+                      spec.numerics.threads, &sp.representation);
   Vec3 lo = Vec3::Constant(INFINITY), hi = -lo;
   std::vector<MassProperties> mp;
   for (const TriMesh& m : scan.meshes) {

@@ -12,7 +12,7 @@
 #pragma once
 
 #include "dynamics/world.h"
-#include "lab/direct_shear_spec.h"
+#include "lab/lab_spec.h"
 #include "lab/specimen.h"
 
 namespace grainlab {
@@ -23,6 +23,6 @@ inline constexpr double kScanOverlap = 1e-3;
 // Adds the scan's grains (shapes by grains.representation) to w. Throws
 // InputError when the scanned grains do not fit the box (with the box size
 // they need) or still overlap at the largest spread.
-Specimen place_scanned_specimen(World& w, const DirectShearSpec& spec, Index grain_material);
+Specimen place_scanned_specimen(World& w, const LabSpec& spec, Index grain_material);
 
 }  // namespace grainlab

@@ -1,6 +1,6 @@
 // The settling-bed scene: grains dropped from a loose lattice into an open box
-// (floor and four side walls) come to rest under gravity. Shared by the tests,
-// the benchmark and (until the direct shear lands) `grainlab demo`.
+// (floor and four side walls) come to rest under gravity. Shared by the tests
+// and the benchmarks.
 #pragma once
 
 #include "dynamics/world.h"

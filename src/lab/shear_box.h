@@ -17,7 +17,7 @@
 #pragma once
 
 #include "dynamics/world.h"
-#include "lab/direct_shear_spec.h"
+#include "lab/lab_spec.h"
 
 namespace grainlab {
 
@@ -25,7 +25,7 @@ inline constexpr double kShearBoxSlab = 2.5e-3;  // m, t: thickness of the side 
 
 // Walls by role, in the order build_shear_box adds them (World wall indices
 // when the box is built into an empty World).
-enum ShearBoxWall : Index { Floor = 0, LowerXm, LowerXp, LowerYm, LowerYp, UpperXm, UpperXp, UpperYm, UpperYp, Cap, ShearBoxWallCount };
+enum ShearBoxWall : Index { Floor = 0, LowerXm, LowerXp, LowerYm, LowerYp, UpperXm, UpperXp, UpperYm, UpperYp, Cap };
 
 // Adds the box's walls to `w` (material `material`), the gap closed; fill_top
 // (m) is the top of the loose fill.

@@ -9,6 +9,14 @@
 
 namespace grainlab {
 
+// Columns of shear_series_columns() (lab/direct_shear.h), by name (rows[i][ShearColumn::StressRatio]).
+struct ShearColumn {
+  enum : int {
+    Time, Strain, HorizontalDisplacement, VerticalDisplacement, ShearForce, NormalForce, NormalStress,
+    StressRatio, FrictionAngle, VoidRatio, Coordination, KineticEnergy, UnbalancedForce, InertialNumber
+  };
+};
+
 // Peak and final values of a run.
 struct ShearSummary {
   double peak_friction_angle_deg = 0, strain_at_peak_friction = 0;

@@ -12,10 +12,10 @@
 
 namespace grainlab {
 
-Specimen place_loose_specimen(World& world, const DirectShearSpec& spec, Index grain_material) {
+Specimen place_loose_specimen(World& world, const LabSpec& spec, Index grain_material) {
   Model& m = world.model;
   Specimen sp;
-  const std::vector<Index> shapes = add_grain_shapes(m, spec.grains, spec.seed, &sp.representation);
+  const std::vector<Index> shapes = add_grain_shapes(m, spec.grains, spec.seed, spec.numerics.threads, &sp.representation);
   double mean_volume = 0, max_bound = 0;
   for (Index s : shapes) {
     mean_volume += m.shapes[s].volume / shapes.size();
@@ -50,13 +50,13 @@ Specimen place_loose_specimen(World& world, const DirectShearSpec& spec, Index g
   return sp;
 }
 
-PhaseOverrides deposition_overrides(const World& w, const DirectShearSpec& spec, Index grain_material) {
+PhaseOverrides deposition_overrides(const World& w, const LabSpec& spec, Index grain_material) {
   PhaseOverrides o = compaction_overrides(spec, grain_material);
   o.gravity = Vec3(0, 0, -kDepositionGravity * kStandardGravity * w.model.density_scale);
   return o;
 }
 
-PhaseOverrides compaction_overrides(const DirectShearSpec& spec, Index grain_material) {
+PhaseOverrides compaction_overrides(const LabSpec& spec, Index grain_material) {
   PhaseOverrides o;
   o.friction.emplace_back(grain_material, spec.specimen.deposition_friction);
   return o;

@@ -17,7 +17,7 @@
 #include "lab/grain_library.h"
 
 #include "dynamics/world.h"
-#include "lab/direct_shear_spec.h"
+#include "lab/lab_spec.h"
 
 namespace grainlab {
 
@@ -41,12 +41,12 @@ struct Specimen {
 
 // Adds the grain shapes and the grains (material `grain_material`) of `spec`
 // to w on the loose lattice inside the box centred on x = y = 0.
-Specimen place_loose_specimen(World& w, const DirectShearSpec& spec, Index grain_material);
+Specimen place_loose_specimen(World& w, const LabSpec& spec, Index grain_material);
 
 // The phase settings of deposition (gravity 100 g S) or of compaction (the
 // Model's gravity), both with the deposition friction on the grain material.
-PhaseOverrides deposition_overrides(const World& w, const DirectShearSpec& spec, Index grain_material);
-PhaseOverrides compaction_overrides(const DirectShearSpec& spec, Index grain_material);
+PhaseOverrides deposition_overrides(const World& w, const LabSpec& spec, Index grain_material);
+PhaseOverrides compaction_overrides(const LabSpec& spec, Index grain_material);
 
 // Deposition's settled test (above).
 bool deposit_settled(const World& w, const Specimen& s);

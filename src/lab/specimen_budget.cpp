@@ -68,7 +68,7 @@ void refuse_impossible_specimen(double count, double available, const BoxSpec& b
               side * 1e3, side * 1e3);
 }
 
-void check_specimen_fits(const DirectShearSpec& spec) {
+void check_specimen_fits(const LabSpec& spec) {
   // Volumes only: the meshes' own (collision shapes are not needed here).
   const GrainSet set = make_grain_set(spec.grains, spec.seed);
   double mean_volume = 0;

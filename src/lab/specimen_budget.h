@@ -27,7 +27,7 @@
 // refused when it needs more, or when N exceeds what an Index holds.
 #pragma once
 
-#include "lab/direct_shear_spec.h"
+#include "lab/lab_spec.h"
 
 #include <cstdint>
 
@@ -55,6 +55,6 @@ void refuse_impossible_specimen(double count, double available, const BoxSpec& b
 // own indices are not measured yet: the most grains a target can ask), checked
 // before anything long starts: generates the grain shapes into a scratch
 // Model and calls refuse_impossible_specimen.
-void check_specimen_fits(const DirectShearSpec& spec);
+void check_specimen_fits(const LabSpec& spec);
 
 }  // namespace grainlab

@@ -17,8 +17,7 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr std::int64_t kMaxIsotropicSteps = 400000;  // as the direct shear's phases
 
-// Column indices of triaxial_series_columns().
-enum Column { Time, AxialStrain, VolumetricStrain, Sigma1, Sigma3, Deviator, Mean, Ratio, SideError, VoidRatio };
+using C = TriaxialColumn;
 
 // The sides: their two slabs, axis and inward direction.
 struct Side {
@@ -59,26 +58,26 @@ TriaxialSummary summarise_triaxial(const std::vector<std::vector<double>>& rows)
     double sum = 0;
     int n = 0;
     for (const auto& r : rows)
-      if (std::abs(r[AxialStrain] - rows[i][AxialStrain]) <= 0.005 + 1e-12) sum += r[column], ++n;
+      if (std::abs(r[C::AxialStrain] - rows[i][C::AxialStrain]) <= 0.005 + 1e-12) sum += r[column], ++n;
     return sum / n;
   };
   std::size_t peak = 0, q_peak = 0;
   double best = -1e300;
   for (std::size_t i = 0; i < rows.size(); ++i) {
-    const double eta = smoothed(i, Ratio);
+    const double eta = smoothed(i, C::Ratio);
     if (eta > best) best = eta, peak = i;
-    if (rows[i][Deviator] > rows[q_peak][Deviator]) q_peak = i;
+    if (rows[i][C::Deviator] > rows[q_peak][C::Deviator]) q_peak = i;
   }
   s.peak_stress_ratio = best;
-  s.strain_at_peak = rows[peak][AxialStrain];
+  s.strain_at_peak = rows[peak][C::AxialStrain];
   s.peak_friction_angle_deg = friction_angle_deg(s.peak_stress_ratio);
   // Critical state: eta over the last fifth of the axial strain, and the
   // dilatancy there from the least-squares slope of eps_v on eps_a.
-  const double last = rows.back()[AxialStrain];
+  const double last = rows.back()[C::AxialStrain];
   double sum = 0;
   LineFit volume;
   for (const auto& r : rows)
-    if (r[AxialStrain] >= 0.8 * last) sum += r[Ratio], volume.add(r[AxialStrain], r[VolumetricStrain]);
+    if (r[C::AxialStrain] >= 0.8 * last) sum += r[C::Ratio], volume.add(r[C::AxialStrain], r[C::VolumetricStrain]);
   s.critical_stress_ratio = sum / volume.n;
   s.critical_friction_angle_deg = friction_angle_deg(s.critical_stress_ratio);
   s.critical_dilatancy_angle_deg = dilatancy_angle_deg(volume.slope());  // NaN stays NaN
@@ -86,38 +85,38 @@ TriaxialSummary summarise_triaxial(const std::vector<std::vector<double>>& rows)
   s.peak_dilatancy_angle_deg = kNaN;
   for (std::size_t i = 0, j = 0; i < rows.size(); ++i) {
     j = std::max(j, i);
-    while (j < rows.size() && rows[j][AxialStrain] < rows[i][AxialStrain] + 0.01) ++j;
+    while (j < rows.size() && rows[j][C::AxialStrain] < rows[i][C::AxialStrain] + 0.01) ++j;
     if (j == rows.size()) break;
-    const double r = (rows[j][VolumetricStrain] - rows[i][VolumetricStrain]) /
-                     (rows[j][AxialStrain] - rows[i][AxialStrain]);
+    const double r = (rows[j][C::VolumetricStrain] - rows[i][C::VolumetricStrain]) /
+                     (rows[j][C::AxialStrain] - rows[i][C::AxialStrain]);
     const double psi = dilatancy_angle_deg(r);
     if (!(psi <= s.peak_dilatancy_angle_deg)) s.peak_dilatancy_angle_deg = psi;
   }
   // E50: where q first reaches half its peak (raw samples), interpolated.
-  const double half = 0.5 * rows[q_peak][Deviator];
+  const double half = 0.5 * rows[q_peak][C::Deviator];
   s.e50_Pa = kNaN;
   for (std::size_t i = 1; i <= q_peak; ++i)
-    if (rows[i][Deviator] >= half) {
-      const double q0 = rows[i - 1][Deviator], q1 = rows[i][Deviator];
-      const double e0 = rows[i - 1][AxialStrain], e1 = rows[i][AxialStrain];
+    if (rows[i][C::Deviator] >= half) {
+      const double q0 = rows[i - 1][C::Deviator], q1 = rows[i][C::Deviator];
+      const double e0 = rows[i - 1][C::AxialStrain], e1 = rows[i][C::AxialStrain];
       const double eps = e0 + (half - q0) / (q1 - q0) * (e1 - e0);
       if (eps > 0) s.e50_Pa = half / eps;
       break;
     }
-  s.final_void_ratio = rows.back()[VoidRatio];
+  s.final_void_ratio = rows.back()[C::VoidRatio];
   return s;
 }
 
-TriaxialTest::TriaxialTest(const DirectShearSpec& spec) : ClosedBoxTest(spec) {
+TriaxialTest::TriaxialTest(const LabSpec& spec) : ClosedBoxTest(spec) {
   const double sigma3 = spec.consolidation.normal_stress;
-  const double limit = prep_.servo_speed_limit();  // as the preparation's servo
+  const double limit = prep_->servo_speed_limit();  // as the preparation's servo
   cap_servo_ = StressServo(Cap, spec.box.length * spec.box.width, sigma3, limit);
   for (int k = 0; k < 4; ++k)
     side_servos_[k] = StressServo({kSides[k].lower, kSides[k].upper}, 2, kSides[k].axis, kSides[k].inward,
                                   side_area(k), sigma3, limit, kSideAlpha);
   // I = (v / H) d sqrt(rho S / sigma_3), H the target height.
   const double rho = spec.material.grain.density * world().model.density_scale;
-  axial_speed_ = spec.numerics.inertial_number * spec.box.height / (prep_.mean_diameter() * std::sqrt(rho / sigma3));
+  axial_speed_ = spec.numerics.inertial_number * spec.box.height / (prep_->mean_diameter() * std::sqrt(rho / sigma3));
   world().add_controller([this](World& w, double dt_step) {
     if (p_.phase != TriaxialPhase::Isotropic && p_.phase != TriaxialPhase::Shear) return;
     for (int k = 0; k < 4; ++k) {
@@ -164,18 +163,18 @@ double TriaxialTest::volumetric_strain() const {
 }
 
 double TriaxialTest::void_ratio() const {
-  const double vs = prep_.solid_volume();
+  const double vs = prep_->solid_volume();
   return (specimen_volume() - vs) / vs;
 }
 
 int TriaxialTest::phase_index() const {
   // deposit 0, compact 1, consolidate 2 (the preparation's), isotropic 3, shear 4, done 5.
-  return p_.phase == TriaxialPhase::Prepare ? prep_.phase_index() : 2 + static_cast<int>(p_.phase);
+  return p_.phase == TriaxialPhase::Prepare ? static_cast<int>(prep_->phase()) : 2 + static_cast<int>(p_.phase);
 }
 
 std::string TriaxialTest::phase_name() const {
   switch (p_.phase) {
-    case TriaxialPhase::Prepare: return prep_.phase_name();
+    case TriaxialPhase::Prepare: return prep_->phase_name();
     case TriaxialPhase::Isotropic: return "isotropic";
     case TriaxialPhase::Shear: return "shear";
     case TriaxialPhase::Done: return "done";
@@ -232,7 +231,7 @@ void TriaxialTest::check_corners() const {
 bool TriaxialTest::advance(int max_steps) {
   if (p_.phase == TriaxialPhase::Done) return false;
   if (p_.phase == TriaxialPhase::Prepare) {
-    if (!prep_.advance(max_steps)) enter(TriaxialPhase::Isotropic);
+    if (prepare(max_steps)) enter(TriaxialPhase::Isotropic);
     return true;  // a preparation phase ended, or the steps are done
   }
   World& w = world();
@@ -246,7 +245,7 @@ bool TriaxialTest::advance(int max_steps) {
         check_corners();
         record_sample();
       }
-      if (axial_strain() >= spec_.triaxial.final_strain) {
+      if (axial_strain() >= spec_.settings<TriaxialSpec>().final_strain) {
         enter(TriaxialPhase::Done);
         return false;
       }
@@ -273,10 +272,10 @@ void TriaxialTest::record_sample() {
   p_.side_stress_sum = {};
   p_.steps_since_sample = 0;
   const double rho = spec_.material.grain.density * w.model.density_scale;
-  const double inertial = axial_speed_ / p_.height_at_shear * prep_.mean_diameter() * std::sqrt(rho / std::max(p, 1e-9));
+  const double inertial = axial_speed_ / p_.height_at_shear * prep_->mean_diameter() * std::sqrt(rho / std::max(p, 1e-9));
   std::vector<double> row = {w.state.time,  axial_strain(), volumetric_strain(), s1,
                              s3,            q,              p,                   p > 0 ? q / p : kNaN,
-                             side_error,    void_ratio(),   prep_.coordination_number(),
+                             side_error,    void_ratio(),   prep_->coordination_number(),
                              w.kinetic_energy(), unbalanced_force_ratio(w), inertial};
   observe(row);
   p_.rows.push_back(std::move(row));
@@ -284,10 +283,10 @@ void TriaxialTest::record_sample() {
 }
 
 std::vector<SummaryValue> TriaxialTest::summary() const {
-  std::vector<SummaryValue> v = preparation_summary();
+  std::vector<SummaryValue> v = prep_->summary();
   v.push_back({"", "axial_speed_m_per_s", axial_speed_});
   const TriaxialSummary t = summarise_triaxial(p_.rows);
-  v.push_back({"triaxial", "void_ratio_at_shear", p_.rows.empty() ? kNaN : p_.rows.front()[VoidRatio]});
+  v.push_back({"triaxial", "void_ratio_at_shear", p_.rows.empty() ? kNaN : p_.rows.front()[C::VoidRatio]});
   v.push_back({"triaxial", "peak_stress_ratio", t.peak_stress_ratio});
   v.push_back({"triaxial", "axial_strain_at_peak", t.strain_at_peak});
   v.push_back({"triaxial", "peak_friction_angle_deg", t.peak_friction_angle_deg});
@@ -301,7 +300,7 @@ std::vector<SummaryValue> TriaxialTest::summary() const {
 }
 
 std::string TriaxialTest::status_line() const {
-  if (p_.phase == TriaxialPhase::Prepare) return prep_.status_line();
+  if (p_.phase == TriaxialPhase::Prepare) return prep_->status_line();
   const double s1 = axial_stress(), s3 = cell_pressure();
   return fmt::format("axial strain {:.4f}  q {:.1f} kPa  p' {:.1f} kPa  sigma_3 {:.1f} kPa  eps_v {:.4f}  e {:.4f}",
                      axial_strain(), (s1 - s3) * 1e-3, (s1 + 2 * s3) / 3 * 1e-3, s3 * 1e-3, volumetric_strain(),
@@ -309,13 +308,13 @@ std::string TriaxialTest::status_line() const {
 }
 
 std::string TriaxialTest::phase_note() const {
-  if (p_.phase == TriaxialPhase::Prepare) return prep_.phase_note();
+  if (p_.phase == TriaxialPhase::Prepare) return prep_->phase_note();
   if (p_.phase == TriaxialPhase::Isotropic)
     return fmt::format("prepared under the cap: e = {:.4f}; now the cap and the four sides held at {:.0f} kPa",
-                       prep_.achieved_void_ratio(), spec_.consolidation.normal_stress * 1e-3);
+                       prep_->achieved_void_ratio(), spec_.consolidation.normal_stress * 1e-3);
   if (p_.phase == TriaxialPhase::Shear && !p_.rows.empty())
     return fmt::format("isotropically consolidated at {:.0f} kPa: e = {:.4f}; axial speed {:.3g} mm/s",
-                       spec_.consolidation.normal_stress * 1e-3, p_.rows.front()[VoidRatio], axial_speed_ * 1e3);
+                       spec_.consolidation.normal_stress * 1e-3, p_.rows.front()[C::VoidRatio], axial_speed_ * 1e3);
   return "";
 }
 
@@ -328,11 +327,11 @@ std::string TriaxialTest::result_line() const {
                      t.critical_dilatancy_angle_deg, t.peak_dilatancy_angle_deg, t.e50_Pa * 1e-6);
 }
 
-BandGeometry TriaxialTest::band_geometry() const {
+std::optional<BandGeometry> TriaxialTest::band_geometry() const {
   BandGeometry b;
   b.z_min = 0;
   b.z_max = p_.phase < TriaxialPhase::Shear ? cap_height() : p_.height_at_shear;
-  b.layer = prep_.mean_diameter();
+  b.layer = prep_->mean_diameter();
   b.direction = Vec3::UnitX();
   b.strain = 0;  // no imposed shear displacement: the band columns stay empty
   b.length = spec_.box.length;
@@ -341,7 +340,7 @@ BandGeometry TriaxialTest::band_geometry() const {
 
 std::vector<std::uint8_t> TriaxialTest::save() const {
   ByteWriter b;
-  save_preparation(b);
+  prep_->save(b);
   b.i32(static_cast<std::int32_t>(p_.phase));
   p_.rest.save(b);
   cap_servo_.save(b);
@@ -358,7 +357,7 @@ std::vector<std::uint8_t> TriaxialTest::save() const {
 
 void TriaxialTest::load(std::span<const std::uint8_t> bytes) {
   ByteReader r(bytes, "the triaxial protocol state", " Start the run again without --resume.");
-  load_preparation(r);
+  prep_->load(r);
   const std::int32_t phase = r.i32();
   if (phase < 0 || phase > static_cast<int>(TriaxialPhase::Done)) r.corrupted("an unknown phase");
   p_.phase = static_cast<TriaxialPhase>(phase);

@@ -3,8 +3,8 @@
 // stress servo (lab/stress_servo.h), the floor is fixed.
 //
 // Box and preparation (lab/closed_box_test.h): the direct shear box with its
-// gap closed, prepared by the direct shear protocol's deposit, compact and
-// consolidate phases under the cap at consolidation.normal_stress = sigma_3. Each side of the ring is its two
+// gap closed, prepared by the specimen preparation's deposit, compact and
+// consolidate phases (lab/preparation.h) under the cap at consolidation.normal_stress = sigma_3. Each side of the ring is its two
 // slabs moving as one; they are kShearBoxSlab thick and overlap the
 // neighbouring sides by that much, so a side may move outwards by up to that
 // before a corner opens (the run stops with a message if one would).
@@ -65,6 +65,7 @@
 
 #include "lab/closed_box_test.h"
 #include "lab/rest_criteria.h"
+#include "lab/spec_keys.h"
 #include "lab/stress_servo.h"
 
 #include <array>
@@ -74,10 +75,24 @@
 
 namespace grainlab {
 
+// The triaxial test's own settings (config table [triaxial]): isotropic
+// consolidation at consolidation.normal_stress (sigma_3), then axial
+// compression at the inertial number's speed to this axial strain.
+struct TriaxialSpec {
+  double final_strain = 0.15;  // axial strain (H_0 - H) / H_0 at which the test ends
+};
+
 enum class TriaxialPhase : std::int32_t { Prepare = 0, Isotropic = 1, Shear = 2, Done = 3 };
 
 // Column names (with units) of the series recorded during shear.
 const std::vector<std::string>& triaxial_series_columns();
+// Columns of triaxial_series_columns(), by name (rows[i][TriaxialColumn::Ratio]).
+struct TriaxialColumn {
+  enum : int {
+    Time, AxialStrain, VolumetricStrain, Sigma1, Sigma3, Deviator, Mean, Ratio, SideError, VoidRatio, Coordination,
+    KineticEnergy, UnbalancedForce, InertialNumber
+  };
+};
 
 // What the triaxial rows give (definitions above).
 struct TriaxialSummary {
@@ -98,7 +113,9 @@ class TriaxialTest final : public ClosedBoxTest {
  public:
   static constexpr double kSideAlpha = 0.15;  // the side servos' gain (above)
 
-  explicit TriaxialTest(const DirectShearSpec& spec);
+  explicit TriaxialTest(const LabSpec& spec);
+  // Its config table [triaxial] (lab/spec_keys.h).
+  static LabTestKeys keys();
 
   // LabTest.
   bool advance(int max_steps) override;
@@ -108,7 +125,7 @@ class TriaxialTest final : public ClosedBoxTest {
   bool done() const override { return p_.phase == TriaxialPhase::Done; }
   std::int64_t loading_start_step() const override { return p_.shear_start_step; }
   double progress() const override { return axial_strain(); }
-  double final_progress() const override { return spec_.triaxial.final_strain; }
+  double final_progress() const override { return spec_.settings<TriaxialSpec>().final_strain; }
   std::string progress_label() const override { return "axial strain"; }
   std::string status_line() const override;
   std::string phase_note() const override;
@@ -118,7 +135,7 @@ class TriaxialTest final : public ClosedBoxTest {
   std::vector<SummaryValue> summary() const override;
   double specimen_volume() const override { return length(0) * length(1) * cap_height(); }
   double boundary_stress() const override { return cell_pressure(); }
-  BandGeometry band_geometry() const override;
+  std::optional<BandGeometry> band_geometry() const override;
   std::vector<std::uint8_t> save() const override;
   void load(std::span<const std::uint8_t> bytes) override;
 

@@ -331,7 +331,7 @@ TEST(Checkpoint, TheGrainsFingerprintTravelsWithTheFileAndTellsOtherGrains) {
 }
 
 TEST(Checkpoint, ConfigHashFollowsTheConfig) {
-  DirectShearSpec a, b;
+  LabSpec a, b;
   EXPECT_EQ(config_hash(a), config_hash(b));
   b.consolidation.normal_stress = 100e3 + 1e-9;
   EXPECT_NE(config_hash(a), config_hash(b));

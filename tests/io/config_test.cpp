@@ -31,8 +31,8 @@ bool has(const std::string& msg, const std::string& part) { return msg.find(part
 
 TEST(Config, DefaultConfigParsesToTheDefaults) {
   const std::string text = default_config_toml();
-  expect_same_spec(parse_config(text, "defaults.toml"), DirectShearSpec{});
-  EXPECT_TRUE(config_differences(parse_config(text, "defaults.toml"), DirectShearSpec{}).empty());
+  expect_same_spec(parse_config(text, "defaults.toml"), LabSpec{});
+  EXPECT_TRUE(config_differences(parse_config(text, "defaults.toml"), LabSpec{}).empty());
 }
 
 TEST(Config, DefaultConfigNamesEveryKeyWithAComment) {
@@ -59,7 +59,7 @@ TEST(Config, OedometerDefaultsHaveTheScheduleAndNotTheShear) {
   EXPECT_FALSE(has(text, "\n[shear]\n"));
   EXPECT_TRUE(has(default_config_toml(), "\n[shear]\n"));
   EXPECT_FALSE(has(default_config_toml(), "\n[oedometer]\n"));
-  const DirectShearSpec s = parse_config(text, "oedometer.toml");
+  const LabSpec s = parse_config(text, "oedometer.toml");
   EXPECT_EQ(s.test, "oedometer");
   EXPECT_EQ(s.output.folder, "runs/oedometer");
   EXPECT_THROW(default_config_toml("simple-shear"), InputError);
@@ -69,8 +69,8 @@ TEST(Config, OedometerDefaultsHaveTheScheduleAndNotTheShear) {
 }
 
 TEST(Config, OedometerScheduleIsAListOfPositiveStresses) {
-  const DirectShearSpec s = parse_config("test = \"oedometer\"\n[oedometer]\nstresses = [50000, 1e5, 2.5e5]\n", "o.toml");
-  EXPECT_EQ(s.oedometer.stresses, (std::vector<double>{50e3, 100e3, 250e3}));
+  const LabSpec s = parse_config("test = \"oedometer\"\n[oedometer]\nstresses = [50000, 1e5, 2.5e5]\n", "o.toml");
+  EXPECT_EQ(s.settings<OedometerSpec>().stresses, (std::vector<double>{50e3, 100e3, 250e3}));
   std::string msg = parse_error("[oedometer]\nstresses = []\n");
   EXPECT_TRUE(has(msg, "oedometer.stresses = [] is impossible")) << msg;
   EXPECT_TRUE(has(msg, "line 2")) << msg;
@@ -83,8 +83,8 @@ TEST(Config, OedometerScheduleIsAListOfPositiveStresses) {
   EXPECT_TRUE(has(msg, "expects a list of numbers")) << msg;
   msg = parse_error("[oedometer]\nstresses = [1e5, nan]\n");
   EXPECT_TRUE(has(msg, "a list of finite numbers")) << msg;
-  EXPECT_EQ(s.oedometer.loading, "stages");
-  EXPECT_EQ(parse_config("[oedometer]\nloading = \"constant-rate\"\n", "o.toml").oedometer.loading, "constant-rate");
+  EXPECT_EQ(s.settings<OedometerSpec>().loading, "stages");
+  EXPECT_EQ(parse_config("[oedometer]\nloading = \"constant-rate\"\n", "o.toml").settings<OedometerSpec>().loading, "constant-rate");
   msg = parse_error("[oedometer]\nloading = \"fast\"\n");
   EXPECT_TRUE(has(msg, "oedometer.loading = \"fast\" is impossible")) << msg;
   EXPECT_TRUE(has(msg, "\"stages\" or \"constant-rate\"")) << msg;
@@ -97,12 +97,12 @@ TEST(Config, OedometerScheduleIsAListOfPositiveStresses) {
   EXPECT_TRUE(has(msg, "at most triaxial.final_strain = 0.01")) << msg;
 }
 
-TEST(Config, EmptyFileGivesTheDefaults) { expect_same_spec(parse_config("", "empty.toml"), DirectShearSpec{}); }
+TEST(Config, EmptyFileGivesTheDefaults) { expect_same_spec(parse_config("", "empty.toml"), LabSpec{}); }
 
 TEST(Config, ToTomlRoundTripsEveryField) {
-  const DirectShearSpec s = test::all_fields_changed();
-  ASSERT_EQ(config_differences(s, DirectShearSpec{}).size(), 55u) << "a field was left at its default";
-  const DirectShearSpec back = parse_config(to_toml(s), "roundtrip.toml");
+  const LabSpec s = test::all_fields_changed();
+  ASSERT_EQ(config_differences(s, LabSpec{}).size(), 55u) << "a field was left at its default";
+  const LabSpec back = parse_config(to_toml(s), "roundtrip.toml");
   expect_same_spec(back, s);
   EXPECT_TRUE(config_differences(back, s).empty());
   EXPECT_EQ(to_toml(back), to_toml(s));
@@ -112,11 +112,11 @@ TEST(Config, ToTomlKeepsEveryDoubleExactly) {
   std::mt19937_64 rng(5);
   std::uniform_int_distribution<std::uint64_t> bits;
   for (int i = 0; i < 300; ++i) {
-    DirectShearSpec s;
+    LabSpec s;
     do s.numerics.density_scaling = std::fabs(std::bit_cast<double>(bits(rng)));
     while (!std::isfinite(s.numerics.density_scaling));
     if (i % 3 == 0) s.numerics.density_scaling = std::ldexp(s.numerics.density_scaling, -std::ilogb(s.numerics.density_scaling) + (i % 40) - 20);
-    const DirectShearSpec back = parse_config(to_toml(s), "r.toml");
+    const LabSpec back = parse_config(to_toml(s), "r.toml");
     ASSERT_EQ(std::bit_cast<std::uint64_t>(back.numerics.density_scaling),
               std::bit_cast<std::uint64_t>(s.numerics.density_scaling))
         << to_toml(s);
@@ -126,14 +126,14 @@ TEST(Config, ToTomlKeepsEveryDoubleExactly) {
 }
 
 TEST(Config, ToTomlRoundTripsAPreset) {
-  DirectShearSpec s;
+  LabSpec s;
   apply_sand_preset(s, "crushed-limestone");
   s.material.grain.friction = 0.4;  // explicit override of the preset
   expect_same_spec(parse_config(to_toml(s), "preset.toml"), s);
 }
 
 TEST(Config, PresetFirstThenExplicitKeysOverride) {
-  const DirectShearSpec s = parse_config(R"(
+  const LabSpec s = parse_config(R"(
 [material]
 friction = 0.5
 preset = "glass-beads"
@@ -148,13 +148,13 @@ preset = "rounded"
   EXPECT_EQ(s.specimen.e_max, 0.75);                  // from the preset
   EXPECT_EQ(s.specimen.e_min, 0.50);
   EXPECT_EQ(s.grains.preset, "rounded");              // explicit key wins
-  const DirectShearSpec t = parse_config("[material]\npreset = \"crushed-limestone\"\n", "p.toml");
+  const LabSpec t = parse_config("[material]\npreset = \"crushed-limestone\"\n", "p.toml");
   EXPECT_EQ(t.grains.preset, "angular");
   EXPECT_EQ(t.material.grain.friction, 0.28);
 }
 
 TEST(Config, IntegersAreAcceptedForNumbers) {
-  const DirectShearSpec s = parse_config("[consolidation]\nnormal_stress = 50000\n[material]\ndensity = 2600\n", "i.toml");
+  const LabSpec s = parse_config("[consolidation]\nnormal_stress = 50000\n[material]\ndensity = 2600\n", "i.toml");
   EXPECT_EQ(s.consolidation.normal_stress, 50000.0);
   EXPECT_EQ(s.material.grain.density, 2600.0);
 }
@@ -266,7 +266,7 @@ INSTANTIATE_TEST_SUITE_P(
 // e_min/e_max are then the lab's, reported beside the own Dr, and its fixed
 // deposition friction stays fixed. friction -1 searches.
 TEST(Config, OldSpecimenKeysStillParse) {
-  const DirectShearSpec s = parse_config(
+  const LabSpec s = parse_config(
       "[specimen]\nrelative_density = 0.9\ne_max = 0.9\ne_min = 0.6\ntolerance = 0.03\n"
       "deposition_friction = 0.1\n", "old.toml");
   EXPECT_EQ(s.specimen.e_max, 0.9);
@@ -275,11 +275,11 @@ TEST(Config, OldSpecimenKeysStillParse) {
   EXPECT_EQ(s.specimen.indices, "own");
   EXPECT_TRUE(s.targets_own_indices());
   EXPECT_FALSE(s.own_indices_known());  // grainlab run measures them
-  const DirectShearSpec lab = parse_config(
+  const LabSpec lab = parse_config(
       "[specimen]\nindices = \"lab\"\nrelative_density = 0.9\ne_max = 0.9\ne_min = 0.6\n", "lab.toml");
   EXPECT_FALSE(lab.targets_own_indices());
   EXPECT_DOUBLE_EQ(lab.target_void_ratio(), 0.63);
-  const DirectShearSpec own = parse_config("[specimen]\nindices = \"own\"\nrelative_density = 0.5\n"
+  const LabSpec own = parse_config("[specimen]\nindices = \"own\"\nrelative_density = 0.5\n"
                                            "own_e_max = 0.8\nown_e_min = 0.6\ndeposition_friction = -1\n",
                                            "own.toml");
   EXPECT_TRUE(own.targets_own_indices());
@@ -287,7 +287,7 @@ TEST(Config, OldSpecimenKeysStillParse) {
   EXPECT_DOUBLE_EQ(own.target_void_ratio(), 0.7);
   EXPECT_EQ(own.specimen.deposition_friction, -1);  // chosen by bisection
   EXPECT_EQ(parse_config("[specimen]\nrelative_density = 0.5\n", "d.toml").specimen.deposition_friction,
-            DirectShearSpec{}.specimen.deposition_friction);  // the default stays fixed
+            LabSpec{}.specimen.deposition_friction);  // the default stays fixed
   // A void ratio overrides either index.
   EXPECT_FALSE(parse_config("[specimen]\nvoid_ratio = 0.6\n", "e.toml").targets_own_indices());
 }
@@ -315,7 +315,7 @@ TEST(Config, MissingMeshFolder) {
 }
 
 TEST(Config, ValidateOnItsOwn) {
-  DirectShearSpec s;
+  LabSpec s;
   EXPECT_NO_THROW(validate(s, "spec"));
   s.consolidation.normal_stress = -1;
   const std::string msg = error_of<InputError>([&] { validate(s, "my spec"); });
@@ -326,9 +326,9 @@ TEST(Config, LoadConfigFromAFile) {
   test::IoTempDir dir;
   const auto file = dir.path / "run.toml";
   write_file_atomically(file, "seed = 42\n[shear]\nfinal_strain = 0.2\n");
-  const DirectShearSpec s = load_config(file);
+  const LabSpec s = load_config(file);
   EXPECT_EQ(s.seed, 42u);
-  EXPECT_EQ(s.shear.final_strain, 0.2);
+  EXPECT_EQ(s.settings<ShearSpec>().final_strain, 0.2);
 
   write_file_atomically(file, "[shear]\nspeed = -1\n");
   const std::string msg = error_of<InputError>([&] { load_config(file); });
@@ -342,7 +342,7 @@ TEST(Config, LoadConfigFromAFile) {
 }
 
 TEST(Config, SpecToJsonHasTheConfigKeys) {
-  const DirectShearSpec s = test::all_fields_changed();
+  const LabSpec s = test::all_fields_changed();
   const nlohmann::json j = spec_to_json(s);
   EXPECT_EQ(j["seed"].get<std::uint64_t>(), s.seed);
   EXPECT_EQ(j["material"]["contact_law"].get<std::string>(), "hertz");
@@ -350,7 +350,7 @@ TEST(Config, SpecToJsonHasTheConfigKeys) {
   EXPECT_EQ(j["grains"]["faces"].get<int>(), 321);
   EXPECT_EQ(j["output"]["folder"].get<std::string>(), s.output.folder);
   EXPECT_EQ(j["test"].get<std::string>(), "oedometer");
-  EXPECT_EQ(j["oedometer"]["stresses"].get<std::vector<double>>(), s.oedometer.stresses);
+  EXPECT_EQ(j["oedometer"]["stresses"].get<std::vector<double>>(), s.settings<OedometerSpec>().stresses);
   EXPECT_EQ(j.size(), 12u);  // test, seed and ten tables
 
   test::IoTempDir dir;

@@ -20,11 +20,11 @@ const char* kRemeasure =
 }  // namespace
 
 TEST(EmbeddedIndices, BelongToTheDefaultInputsAndTheGrainsMadeForThem) {
-  const DirectShearSpec spec;
+  const LabSpec spec;
   const EmbeddedIndices& r = default_grain_indices();
   EXPECT_EQ(index_key_hash(spec), r.key_hash) << kRemeasure << " (key hash 0x" << std::hex << index_key_hash(spec)
                                               << ")";
-  DirectShearSpec known = spec;
+  LabSpec known = spec;
   known.specimen.own_e_min = r.e_min;
   known.specimen.own_e_max = r.e_max;
   const DirectShearTest test(known);
@@ -39,27 +39,27 @@ TEST(EmbeddedIndices, BelongToTheDefaultInputsAndTheGrainsMadeForThem) {
 }
 
 TEST(EmbeddedIndices, AreTakenOnlyForTheDefaultsIndexInputs) {
-  DirectShearSpec spec;
+  LabSpec spec;
   ASSERT_TRUE(embedded_index_densities(spec));
   // What the index measurement does not depend on leaves them.
   spec.numerics.threads = 1;
   spec.output.folder = "elsewhere";
   spec.specimen.relative_density = 0.3;
   spec.box.length *= 2;  // the index box is 10 d_max across whatever the test's box
-  spec.shear.final_strain = 0.2;
+  spec.settings<ShearSpec>().final_strain = 0.2;
   EXPECT_TRUE(embedded_index_densities(spec));
   // What it depends on does not.
   const auto other = [](auto change) {
-    DirectShearSpec s;
+    LabSpec s;
     change(s);
     return embedded_index_densities(s).has_value();
   };
-  EXPECT_FALSE(other([](DirectShearSpec& s) { s.seed = 2; }));
-  EXPECT_FALSE(other([](DirectShearSpec& s) { s.grains.preset = "sub-angular"; }));
-  EXPECT_FALSE(other([](DirectShearSpec& s) { s.grains.faces = 1000; }));
-  EXPECT_FALSE(other([](DirectShearSpec& s) { s.grains.d_max = 1e-3; }));
-  EXPECT_FALSE(other([](DirectShearSpec& s) { s.grains.folder = "my_grains"; }));
-  EXPECT_FALSE(other([](DirectShearSpec& s) { s.material.grain.friction = 0.3; }));
-  EXPECT_FALSE(other([](DirectShearSpec& s) { s.consolidation.normal_stress = 200e3; }));
-  EXPECT_FALSE(other([](DirectShearSpec& s) { s.numerics.time_step_fraction = 0.2; }));
+  EXPECT_FALSE(other([](LabSpec& s) { s.seed = 2; }));
+  EXPECT_FALSE(other([](LabSpec& s) { s.grains.preset = "sub-angular"; }));
+  EXPECT_FALSE(other([](LabSpec& s) { s.grains.faces = 1000; }));
+  EXPECT_FALSE(other([](LabSpec& s) { s.grains.d_max = 1e-3; }));
+  EXPECT_FALSE(other([](LabSpec& s) { s.grains.folder = "my_grains"; }));
+  EXPECT_FALSE(other([](LabSpec& s) { s.material.grain.friction = 0.3; }));
+  EXPECT_FALSE(other([](LabSpec& s) { s.consolidation.normal_stress = 200e3; }));
+  EXPECT_FALSE(other([](LabSpec& s) { s.numerics.time_step_fraction = 0.2; }));
 }

@@ -93,8 +93,8 @@ void write_text(const fs::path& p, const std::string& text) {
 }
 
 TEST(GoldenDirectShear, ReproducesSeriesAndFinalStateBitForBit) {
-  DirectShearSpec spec = testing_support::tiny_box_spec();
-  spec.shear.final_strain = 0.015;
+  LabSpec spec = testing_support::tiny_box_spec();
+  spec.settings<ShearSpec>().final_strain = 0.015;
   DirectShearTest test(spec);
   observe_shear_analysis(test);
   while (test.advance(1000)) {

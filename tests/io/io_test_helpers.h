@@ -6,7 +6,10 @@
 #include <fstream>
 
 #include "dynamics/laws/registry.h"
-#include "lab/direct_shear_spec.h"
+#include "lab/direct_shear.h"
+#include "lab/lab_spec.h"
+#include "lab/oedometer.h"
+#include "lab/triaxial.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -50,10 +53,10 @@ std::string error_of(const std::function<void()>& f) {
 
 // Every field of two specs, one by one (written out by hand so that a field
 // missing from the config key list shows up here).
-inline void expect_same_spec(const DirectShearSpec& a, const DirectShearSpec& b) {
+inline void expect_same_spec(const LabSpec& a, const LabSpec& b) {
   EXPECT_EQ(a.test, b.test);
-  EXPECT_EQ(a.oedometer.stresses, b.oedometer.stresses);
-  EXPECT_EQ(a.triaxial.final_strain, b.triaxial.final_strain);
+  EXPECT_EQ(a.settings<OedometerSpec>().stresses, b.settings<OedometerSpec>().stresses);
+  EXPECT_EQ(a.settings<TriaxialSpec>().final_strain, b.settings<TriaxialSpec>().final_strain);
   EXPECT_EQ(a.grains.preset, b.grains.preset);
   EXPECT_EQ(a.grains.folder, b.grains.folder);
   EXPECT_EQ(a.grains.shapes, b.grains.shapes);
@@ -87,8 +90,8 @@ inline void expect_same_spec(const DirectShearSpec& a, const DirectShearSpec& b)
   EXPECT_EQ(a.consolidation.normal_stress, b.consolidation.normal_stress);
   EXPECT_EQ(a.consolidation.tolerance, b.consolidation.tolerance);
   EXPECT_EQ(a.consolidation.max_unbalanced, b.consolidation.max_unbalanced);
-  EXPECT_EQ(a.shear.speed, b.shear.speed);
-  EXPECT_EQ(a.shear.final_strain, b.shear.final_strain);
+  EXPECT_EQ(a.settings<ShearSpec>().speed, b.settings<ShearSpec>().speed);
+  EXPECT_EQ(a.settings<ShearSpec>().final_strain, b.settings<ShearSpec>().final_strain);
   EXPECT_EQ(a.numerics.time_step, b.numerics.time_step);
   EXPECT_EQ(a.numerics.time_step_fraction, b.numerics.time_step_fraction);
   EXPECT_EQ(a.numerics.density_scaling, b.numerics.density_scaling);
@@ -110,12 +113,12 @@ inline std::filesystem::path scan_folder_for_config_tests() {
 }
 
 // A spec with a non-default value in every field the config file holds.
-inline DirectShearSpec all_fields_changed() {
-  DirectShearSpec s;
+inline LabSpec all_fields_changed() {
+  LabSpec s;
   s.seed = 987654321987ull;
   s.test = "oedometer";
-  s.oedometer.stresses = {25e3, 1.0 / 3.0 * 1e5, 8e5};
-  s.triaxial.final_strain = 0.3;
+  s.settings<OedometerSpec>().stresses = {25e3, 1.0 / 3.0 * 1e5, 8e5};
+  s.settings<TriaxialSpec>().final_strain = 0.3;
   s.grains.preset = "angular";
   s.grains.folder = "/tmp";
   s.grains.shapes = 7;
@@ -141,7 +144,7 @@ inline DirectShearSpec all_fields_changed() {
   s.box = {0.03, 0.031, 0.016, 1.0 / 3.0 * 1e-3};
   s.specimen = {0.5, "lab", 0.8, 0.55, 0.9, 0.6, 0.7, 0.01, 0.04, 0.1, "runs/first/specimen.bin"};
   s.consolidation = {123456.789, 0.005, 0.02};
-  s.shear = {1e-4, 0.2};
+  s.settings<ShearSpec>() = {1e-4, 0.2};
   s.numerics = {2e-8, 0.15, 100, 5e-4, 2};
   s.output = {"some \"odd\" folder\\name", 0.002, 300, 0.05};
   return s;

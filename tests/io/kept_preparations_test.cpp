@@ -8,7 +8,7 @@
 // checkpoint removes the trials.
 #include "io/kept_preparations.h"
 #include "io_test_helpers.h"
-#include "lab/direct_shear.h"
+#include "lab/preparation.h"
 #include "lab/index_densities.h"
 #include "lab/preparation_search.h"
 #include "lab/sphere_box.h"
@@ -23,7 +23,7 @@
 using namespace grainlab;
 
 TEST(KeptPreparations, AStoppedIndexMeasurementGoesOnFromItsKeptPreparationToTheSameResult) {
-  const DirectShearSpec spec = testing_support::sphere_spec();
+  const LabSpec spec = testing_support::sphere_spec();
   const IndexDensityOptions o = testing_support::small_index_box();
   const IndexDensities straight = measure_index_densities(spec, o);
   ASSERT_TRUE(straight.settled());
@@ -41,15 +41,15 @@ TEST(KeptPreparations, AStoppedIndexMeasurementGoesOnFromItsKeptPreparationToThe
   ASSERT_TRUE(std::filesystem::exists(stopping.file(name)));
 
   // Another seed's preparation does not take it.
-  DirectShearSpec other = spec;
+  LabSpec other = spec;
   other.seed = 4;
   {
     KeptPreparations files(dir.path);
-    const DirectShearSpec prepared = index_preparation_spec(other, o, true, other.seed);
-    DirectShearTest t(prepared);
+    const LabSpec prepared = index_preparation_spec(other, o, true, other.seed);
+    SpecimenPreparation t(prepared);
     EXPECT_LT(files.restore(t, name, prepared), 0);
-    const DirectShearSpec same = index_preparation_spec(spec, o, true, spec.seed);
-    DirectShearTest u(same);
+    const LabSpec same = index_preparation_spec(spec, o, true, spec.seed);
+    SpecimenPreparation u(same);
     EXPECT_GE(files.restore(u, name, same), 0);
     EXPECT_EQ(u.world().state.step, 4300);
     EXPECT_EQ(u.phase_name(), "compact");
@@ -69,7 +69,7 @@ TEST(KeptPreparations, AStoppedIndexMeasurementGoesOnFromItsKeptPreparationToThe
 }
 
 TEST(KeptPreparations, AStoppedTrialGoesOnToTheSameSpecimenAndAFinishedOneIsTakenBack) {
-  const DirectShearSpec spec = testing_support::sphere_spec();
+  const LabSpec spec = testing_support::sphere_spec();
   const double mu = 0.05;
   PreparationTrial straight;
   const auto t0 = trial_preparation(spec, mu, straight);
@@ -113,9 +113,9 @@ TEST(KeptPreparations, AStoppedTrialGoesOnToTheSameSpecimenAndAFinishedOneIsTake
 
   // Written for other grains (the generator changed since): not taken back.
   {
-    DirectShearSpec s = spec;
+    LabSpec s = spec;
     s.specimen.deposition_friction = mu;
-    DirectShearTest fresh(s);
+    SpecimenPreparation fresh(s);
     EXPECT_GE(KeptPreparations(dir.path).restore(fresh, trial_preparation_name(mu), s), 0);
     std::fstream f(file, std::ios::in | std::ios::out | std::ios::binary);
     f.seekg(12);
@@ -123,7 +123,7 @@ TEST(KeptPreparations, AStoppedTrialGoesOnToTheSameSpecimenAndAFinishedOneIsTake
     f.seekp(12);
     f.put(byte);
     f.close();
-    DirectShearTest other(s);
+    SpecimenPreparation other(s);
     EXPECT_LT(KeptPreparations(dir.path).restore(other, trial_preparation_name(mu), s), 0);
   }
 

@@ -27,7 +27,7 @@ IndexPreparation preparation(std::uint64_t seed, double friction, double e) {
 TEST(IndexDensitiesFile, AnUnfinishedFileGivesItsPreparationsAndNoMeans) {
   test::IoTempDir dir;
   const auto file = dir.path / "index_densities.json";
-  DirectShearSpec spec;
+  LabSpec spec;
   EXPECT_FALSE(cached_index_densities(file, spec));  // no file
   EXPECT_TRUE(unfinished_index_densities(file, spec).dense.empty());
 
@@ -49,7 +49,7 @@ TEST(IndexDensitiesFile, AnUnfinishedFileGivesItsPreparationsAndNoMeans) {
     EXPECT_EQ(a.wall_s, b.wall_s);
   }
   // Other inputs (here the seed) take nothing from it.
-  DirectShearSpec other = spec;
+  LabSpec other = spec;
   other.seed += 1;
   EXPECT_TRUE(unfinished_index_densities(file, other).dense.empty());
 

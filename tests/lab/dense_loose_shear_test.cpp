@@ -53,8 +53,8 @@ constexpr double kEMax = 0.840;
 // loose specimens, three were still at their lowest at 10 %.
 constexpr std::uint64_t kSeeds[] = {3, 4, 5};
 
-DirectShearSpec sphere_spec(double deposition_friction) {
-  DirectShearSpec spec;
+LabSpec sphere_spec(double deposition_friction) {
+  LabSpec spec;
   spec.grains.preset = "glass-beads";
   spec.grains.shapes = 4;
   spec.material.grain.friction = 0.5;  // more than glass (0.12): a clear peak and dilation in a small box
@@ -67,7 +67,7 @@ DirectShearSpec sphere_spec(double deposition_friction) {
   spec.specimen.void_ratio = 0.75;  // sets the grain count (345 spheres)
   spec.specimen.tolerance = 1;      // the test checks Dr itself
   spec.specimen.deposition_friction = deposition_friction;
-  spec.shear.final_strain = 0.10;
+  spec.settings<ShearSpec>().final_strain = 0.10;
   spec.numerics.inertial_number = 1e-3;
   spec.numerics.threads = 2;
   spec.output.strain_interval = 0.001;
@@ -80,10 +80,9 @@ struct Curve {
 };
 
 Curve shear(double deposition_friction, std::uint64_t seed) {
-  DirectShearSpec spec = sphere_spec(deposition_friction);
+  LabSpec spec = sphere_spec(deposition_friction);
   spec.seed = seed;
   DirectShearTest t(spec);
-  t.world().settings.threads = 2;
   while (t.advance(5000)) {
   }
   Curve c;

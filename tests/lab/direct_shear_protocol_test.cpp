@@ -14,15 +14,15 @@ using namespace grainlab;
 
 namespace {
 
-DirectShearSpec tiny_protocol_spec() {
-  DirectShearSpec spec = testing_support::tiny_box_spec();
-  spec.shear.final_strain = 0.02;
+LabSpec tiny_protocol_spec() {
+  LabSpec spec = testing_support::tiny_box_spec();
+  spec.settings<ShearSpec>().final_strain = 0.02;
   return spec;
 }
 
 // One run shared by the tests below (it takes most of their time).
 struct TinyRun {
-  DirectShearSpec spec = tiny_protocol_spec();
+  LabSpec spec = tiny_protocol_spec();
   DirectShearTest test{spec};
   double consolidated_stress = 0;  // Pa, when consolidation ended
   double max_shear_stress_error = 0;  // relative, at any step of shear
@@ -111,7 +111,7 @@ void series_is_consistent_with_the_walls(const TinyRun& r) {
     EXPECT_NEAR(row[kPhi], std::atan(row[kRatio]) * 180 / M_PI, 1e-9);
   }
   // The upper half moved at the shear speed; the last row is the final strain.
-  EXPECT_NEAR(rows.back()[kStrain], r.spec.shear.final_strain, 1e-3);
+  EXPECT_NEAR(rows.back()[kStrain], r.spec.settings<ShearSpec>().final_strain, 1e-3);
   EXPECT_DOUBLE_EQ(rows.back()[kDv], r.test.cap_displacement());
   // Quasi-static: the shear force on the upper half is balanced by the lower
   // half, and the cap's load plus the weight by the floor and the slabs, up
@@ -160,7 +160,7 @@ TEST(DirectShearProtocol, TinyRunPreparesConsolidatesShearsAndBalances) {
 }
 
 TEST(DirectShearProtocol, UnreachableTargetStopsWithAMessage) {
-  DirectShearSpec spec = tiny_protocol_spec();
+  LabSpec spec = tiny_protocol_spec();
   spec.specimen.void_ratio = 0.40;  // far denser than these grains pack
   DirectShearTest t(spec);
   try {

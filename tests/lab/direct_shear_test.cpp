@@ -18,7 +18,7 @@ using testing_support::tiny_box_spec;
 // Runs `spec` for 2 x batches x steps; a copy restored from the checkpoint
 // taken halfway (through the real encoding, as `grainlab run --resume` does)
 // must end with the same state and series, bit for bit.
-void expect_restore_continues_bit_for_bit(const DirectShearSpec& spec, int batches, int steps,
+void expect_restore_continues_bit_for_bit(const LabSpec& spec, int batches, int steps,
                                           bool concave = false) {
   DirectShearTest a(spec);
   for (int i = 0; i < batches; ++i) a.advance(steps);
@@ -48,13 +48,13 @@ TEST(DirectShear, CheckpointRestoreContinuesBitForBit) { expect_restore_continue
 // their pairs keep their piece pairs' caches (CandidatePair::pieces), which
 // the checkpoint carries too.
 TEST(DirectShear, CheckpointRestoreOfConcaveGrainsContinuesBitForBit) {
-  DirectShearSpec spec = tiny_box_spec();
+  LabSpec spec = tiny_box_spec();
   spec.grains.convexity = 0.85;
   expect_restore_continues_bit_for_bit(spec, 3, 200, true);
 }
 
 TEST(DirectShear, GrainCountFollowsTheTargetVoidRatio) {
-  const DirectShearSpec spec = tiny_box_spec();
+  const LabSpec spec = tiny_box_spec();
   DirectShearTest t(spec);
   const double box = spec.box.length * spec.box.width * spec.box.height;
   const double e = box / t.solid_volume() - 1;

@@ -41,7 +41,7 @@ namespace {
 // One set of the preset's shapes (seed `shape_seed`), 60 grains in random
 // orientations dropped from `height` (m); returns the largest E/E0.
 double largest_energy_ratio(std::uint64_t shape_seed, double height) {
-  DirectShearSpec spec;
+  LabSpec spec;
   apply_sand_preset(spec, "crushed-limestone");
   World w;
   Model& m = w.model;
@@ -50,7 +50,7 @@ double largest_energy_ratio(std::uint64_t shape_seed, double height) {
   Material wall = spec.material.grain;
   wall.friction = spec.material.wall_friction;
   const Index floor_material = m.add_material(wall);
-  const std::vector<Index> shapes = add_grain_shapes(m, spec.grains, shape_seed);
+  const std::vector<Index> shapes = add_grain_shapes(m, spec.grains, shape_seed, spec.numerics.threads);
   const int n = 60;
   const double pitch = 3e-3;
   Rng rng(12);

@@ -6,6 +6,8 @@
 #include "io/checkpoint.h"
 #include "lab/direct_shear.h"
 #include "lab/lab_test.h"
+#include "lab/oedometer.h"
+#include "lab/triaxial.h"
 #include "state_compare.h"
 #include "sphere_box.h"
 #include "tiny_box.h"
@@ -19,7 +21,7 @@ namespace {
 // Runs `a` until `reached` holds, saves, continues both the original and a
 // restored copy by the same steps, and compares them.
 template <typename Reached>
-void save_restore_continue(const DirectShearSpec& spec, Reached reached, int steps) {
+void save_restore_continue(const LabSpec& spec, Reached reached, int steps) {
   std::unique_ptr<LabTest> a = make_lab_test(spec.test, spec);
   while (!reached(*a)) ASSERT_TRUE(a->advance(7)) << "the test ended before the state to save";
   const std::vector<std::uint8_t> bytes = encode_checkpoint(a->world().state, a->save(), 7);
@@ -41,7 +43,7 @@ void save_restore_continue(const DirectShearSpec& spec, Reached reached, int ste
 }  // namespace
 
 TEST(LabTestSaveRestore, MidCompactionWithTheServoActive) {
-  const DirectShearSpec spec = testing_support::tiny_box_spec();
+  const LabSpec spec = testing_support::tiny_box_spec();
   save_restore_continue(
       spec,
       [](const LabTest& t) {
@@ -53,8 +55,8 @@ TEST(LabTestSaveRestore, MidCompactionWithTheServoActive) {
 }
 
 TEST(LabTestSaveRestore, MidShear) {
-  DirectShearSpec spec = testing_support::tiny_box_spec();
-  spec.shear.final_strain = 0.02;
+  LabSpec spec = testing_support::tiny_box_spec();
+  spec.settings<ShearSpec>().final_strain = 0.02;
   save_restore_continue(
       spec, [](const LabTest& t) { return t.loading() && t.series().size() >= 3; }, 600);
 }
@@ -62,8 +64,8 @@ TEST(LabTestSaveRestore, MidShear) {
 TEST(LabTestSaveRestore, OedometerMidStageAfterARow) {
   // The servo of the second stage, its calm counter and window, the stage rows.
   // Spheres (cheap): the protocol is the same for any grain.
-  DirectShearSpec spec = testing_support::loose_bead_spec("oedometer");
-  spec.oedometer.stresses = {200e3, 400e3};
+  LabSpec spec = testing_support::loose_bead_spec("oedometer");
+  spec.settings<OedometerSpec>().stresses = {200e3, 400e3};
   save_restore_continue(
       spec,
       [](const LabTest& t) { return t.loading() && t.series().size() == 2 && t.world().state.step % kCheckEvery != 0; },
@@ -73,21 +75,21 @@ TEST(LabTestSaveRestore, OedometerMidStageAfterARow) {
 TEST(LabTestSaveRestore, OedometerAtAConstantRateUnloading) {
   // The cap's speed (re-derived from H_0), the last row's stress, the rows;
   // saved on the way back down, after the cap has turned.
-  DirectShearSpec spec = testing_support::loose_bead_spec("oedometer");
-  spec.oedometer.stresses = {200e3, 100e3};
-  spec.oedometer.loading = "constant-rate";
+  LabSpec spec = testing_support::loose_bead_spec("oedometer");
+  spec.settings<OedometerSpec>().stresses = {200e3, 100e3};
+  spec.settings<OedometerSpec>().loading = "constant-rate";
   save_restore_continue(
       spec,
       [](const LabTest& t) {
-        return t.loading() && !t.series().empty() && t.series().back()[1] == 2 && t.world().state.step % 7 != 0;
+        return t.loading() && !t.series().empty() && t.series().back()[OedometerColumn::Stage] == 2 && t.world().state.step % 7 != 0;
       },
       600);
 }
 
 TEST(LabTestSaveRestore, TriaxialMidShear) {
   // The four side servos and the cap's speed, the side stress sums, the rows.
-  DirectShearSpec spec = testing_support::loose_bead_spec("triaxial");
-  spec.triaxial.final_strain = 0.02;
+  LabSpec spec = testing_support::loose_bead_spec("triaxial");
+  spec.settings<TriaxialSpec>().final_strain = 0.02;
   spec.output.strain_interval = 0.002;
   save_restore_continue(
       spec, [](const LabTest& t) { return t.loading() && t.series().size() >= 2 && t.world().state.step % 7 != 0; },
@@ -95,16 +97,32 @@ TEST(LabTestSaveRestore, TriaxialMidShear) {
 }
 
 TEST(LabTestSaveRestore, RegistryMakesByNameAndRefusesUnknownNames) {
-  const DirectShearSpec spec = testing_support::tiny_box_spec();
+  const LabSpec spec = testing_support::tiny_box_spec();
   EXPECT_EQ(make_lab_test("direct-shear", spec)->phase_name(), "deposit");
   EXPECT_EQ(make_lab_test("oedometer", spec)->phase_name(), "deposit");
   EXPECT_EQ(make_lab_test("triaxial", spec)->phase_name(), "deposit");
   EXPECT_THROW(make_lab_test("simple-shear", spec), InputError);
-  EXPECT_EQ(lab_test_names(), (std::vector<std::string>{"direct-shear", "oedometer", "triaxial"}));
+  // The built-in tests first (a program may register more: hold_test.cpp).
+  const std::vector<std::string> names = lab_test_names();
+  ASSERT_GE(names.size(), 3u);
+  EXPECT_EQ(std::vector<std::string>(names.begin(), names.begin() + 3),
+            (std::vector<std::string>{"direct-shear", "oedometer", "triaxial"}));
+}
+
+TEST(LabTestSaveRestore, EveryTestsWorldTakesTheSpecsThreadCount) {
+  // Set where the World is built (lab/preparation.h), never written afterwards.
+  LabSpec spec = testing_support::tiny_box_spec();
+  spec.numerics.threads = 3;
+  for (const std::string& name : {"direct-shear", "oedometer", "triaxial"}) {
+    std::unique_ptr<LabTest> t = make_lab_test(name, spec);
+    EXPECT_EQ(t->world().settings.threads, 3) << name;
+    t->advance(10);
+    EXPECT_EQ(t->world().settings.threads, 3) << name;
+  }
 }
 
 TEST(LabTestSaveRestore, TruncatedProtocolBytesAreRefused) {
-  const DirectShearSpec spec = testing_support::tiny_box_spec();
+  const LabSpec spec = testing_support::tiny_box_spec();
   std::unique_ptr<LabTest> a = make_lab_test("direct-shear", spec);
   a->advance(100);
   std::vector<std::uint8_t> bytes = a->save();

@@ -12,22 +12,23 @@
 #include <vector>
 
 using namespace grainlab;
+using C = OedometerColumn;
 
 namespace {
 
 // A row in oedometer_series_columns() order with the columns the summary reads.
 std::vector<double> row(double target, double stress, double k0, double strain, double e, double modulus) {
   std::vector<double> r(oedometer_series_columns().size(), 0.0);
-  r[2] = target, r[3] = stress, r[6] = k0, r[7] = strain, r[9] = e, r[10] = modulus;
+  r[C::Target] = target, r[C::Vertical] = stress, r[C::K0] = k0, r[C::Strain] = strain, r[C::VoidRatio] = e, r[C::Modulus] = modulus;
   return r;
 }
 
 // 240 beads in a 6 d_max box (5 x 5 x 4.2 mm), loose (e about 0.82 with the
 // walls), consolidated at 50 kPa, then the schedule.
-DirectShearSpec bead_oedometer(std::vector<double> stresses, double wall_friction = 0) {
-  DirectShearSpec s = testing_support::loose_bead_spec("oedometer");
+LabSpec bead_oedometer(std::vector<double> stresses, double wall_friction = 0) {
+  LabSpec s = testing_support::loose_bead_spec("oedometer");
   s.material.wall_friction = wall_friction;
-  s.oedometer.stresses = std::move(stresses);
+  s.settings<OedometerSpec>().stresses = std::move(stresses);
   return s;
 }
 
@@ -48,19 +49,19 @@ TEST(Oedometer, SummaryOfAKnownCompressionLaw) {
   std::vector<std::vector<double>> rows;
   const auto add = [&](double target, double e) {
     const double eps = c * std::pow(target, 2.0 / 3.0);
-    const double m = rows.empty() ? NAN : (target - rows.back()[3]) / (eps - rows.back()[7]);
+    const double m = rows.empty() ? NAN : (target - rows.back()[C::Vertical]) / (eps - rows.back()[C::Strain]);
     rows.push_back(row(target, target, 0.5, eps, e, m));
-    rows.back()[1] = static_cast<double>(rows.size() - 1);  // one row per stage
+    rows.back()[C::Stage] = static_cast<double>(rows.size() - 1);  // one row per stage
   };
   for (double s : {100e3, 200e3, 400e3, 800e3}) add(s, e0 - 0.05 * std::log10(s / 100e3));
-  const double e800 = rows.back()[9];
+  const double e800 = rows.back()[C::VoidRatio];
   for (double s : {400e3, 200e3}) add(s, e800 + 0.01 * std::log10(800e3 / s));
   const OedometerSummary o = summarise_oedometer(rows);
   EXPECT_NEAR(o.compression_index, 0.05, 1e-12);
   EXPECT_NEAR(o.swelling_index, 0.01, 1e-12);
   EXPECT_EQ(o.max_stress, 800e3);
   EXPECT_NEAR(o.modulus_stress_exponent, 1.0 / 3.0, 1e-12);
-  EXPECT_EQ(o.final_void_ratio, rows.back()[9]);
+  EXPECT_EQ(o.final_void_ratio, rows.back()[C::VoidRatio]);
   // A constant-rate run's rows between the stages' ends change nothing:
   // the summary reads each stage's last row.
   std::vector<std::vector<double>> dense;
@@ -91,34 +92,34 @@ TEST(Oedometer, FrictionlessRingOfBeads) {
   run_to_end(t);
   const auto& rows = t.series();
   for (const auto& r : rows)
-    std::printf("stage %g: sigma_v/target %.5f, floor/cap %.5f, K0 %.4f, e %.5f, M %.4g Pa\n", r[1], r[3] / r[2],
-                r[4] / r[3], r[6], r[9], r[10]);
+    std::printf("stage %g: sigma_v/target %.5f, floor/cap %.5f, K0 %.4f, e %.5f, M %.4g Pa\n", r[C::Stage], r[C::Vertical] / r[C::Target],
+                r[C::FloorStress] / r[C::Vertical], r[C::K0], r[C::VoidRatio], r[C::Modulus]);
   ASSERT_EQ(rows.size(), 7u);
-  const double e0 = rows[0][9], h0 = rows[0][8];
+  const double e0 = rows[0][C::VoidRatio], h0 = rows[0][C::Height];
   for (std::size_t i = 0; i < rows.size(); ++i) {
     SCOPED_TRACE(i);
     const auto& r = rows[i];
-    EXPECT_EQ(r[1], static_cast<double>(i));
+    EXPECT_EQ(r[C::Stage], static_cast<double>(i));
     // The servo held the stage's stress within 1 %.
-    EXPECT_NEAR(r[3] / r[2], 1.0, 0.01);
+    EXPECT_NEAR(r[C::Vertical] / r[C::Target], 1.0, 0.01);
     // Frictionless walls carry no vertical load: the floor sees the cap's stress.
-    EXPECT_NEAR(r[4] / r[3], 1.0, 0.01);
+    EXPECT_NEAR(r[C::FloorStress] / r[C::Vertical], 1.0, 0.01);
     // Strain, height and void ratio agree: (e0 - e) / (1 + e0) = eps = 1 - H / H0.
-    EXPECT_NEAR(r[7], 1 - r[8] / h0, 1e-12);
-    EXPECT_NEAR((e0 - r[9]) / (1 + e0), r[7], 1e-12);
+    EXPECT_NEAR(r[C::Strain], 1 - r[C::Height] / h0, 1e-12);
+    EXPECT_NEAR((e0 - r[C::VoidRatio]) / (1 + e0), r[C::Strain], 1e-12);
   }
   // K0 of the normally consolidated specimen (stresses at least 4 x the
   // consolidation's: its first stages remember the preparation) in [0.3, 0.7].
   for (std::size_t i = 2; i <= 4; ++i) {
-    EXPECT_GT(rows[i][6], 0.3) << i;
-    EXPECT_LT(rows[i][6], 0.7) << i;
+    EXPECT_GT(rows[i][C::K0], 0.3) << i;
+    EXPECT_LT(rows[i][C::K0], 0.7) << i;
   }
   // Unloading locks lateral stress in: K0 at 200 kPa is higher after 800 kPa.
-  EXPECT_GT(rows[5][6], rows[2][6]);
+  EXPECT_GT(rows[5][C::K0], rows[2][C::K0]);
   // Loading compresses, unloading swells back less than it compressed.
-  for (std::size_t i = 1; i <= 4; ++i) EXPECT_LT(rows[i][9], rows[i - 1][9]) << i;
-  EXPECT_GT(rows[5][9], rows[4][9]);
-  EXPECT_LT(rows[6][9], rows[0][9]);
+  for (std::size_t i = 1; i <= 4; ++i) EXPECT_LT(rows[i][C::VoidRatio], rows[i - 1][C::VoidRatio]) << i;
+  EXPECT_GT(rows[5][C::VoidRatio], rows[4][C::VoidRatio]);
+  EXPECT_LT(rows[6][C::VoidRatio], rows[0][C::VoidRatio]);
   const OedometerSummary o = summarise_oedometer(rows);
   std::printf("Cc %.4f, Cs %.4f, n %.3f\n", o.compression_index, o.swelling_index, o.modulus_stress_exponent);
   EXPECT_GT(o.compression_index, 0);
@@ -134,7 +135,7 @@ TEST(Oedometer, FrictionlessRingOfBeads) {
   // mean over seeds 3, 5 and 6.
   double n_sum = o.modulus_stress_exponent;
   for (int seed : {5, 6}) {
-    DirectShearSpec spec = bead_oedometer({100e3, 200e3, 400e3, 800e3, 200e3, 50e3});
+    LabSpec spec = bead_oedometer({100e3, 200e3, 400e3, 800e3, 200e3, 50e3});
     spec.seed = seed;
     OedometerTest other(spec);
     run_to_end(other);
@@ -155,21 +156,21 @@ TEST(Oedometer, WallFrictionCarriesPartOfTheLoad) {
   // Janssen's bound, the friction fully mobilised on all four walls:
   // d sigma_v / dz = -4 mu_w K sigma_v / L, so floor / cap >= exp(-4 mu_w K
   // H / L), with K = sigma_h over the mean of the cap's and floor's stresses.
-  const DirectShearSpec spec = bead_oedometer({400e3}, 0.3);
+  const LabSpec spec = bead_oedometer({400e3}, 0.3);
   OedometerTest t(spec);
   run_to_end(t);
   const auto& r = t.series().back();
-  const double k = r[5] / (0.5 * (r[3] + r[4]));
-  const double janssen = std::exp(-4 * 0.19 * k * r[8] / spec.box.length);
+  const double k = r[C::Lateral] / (0.5 * (r[C::Vertical] + r[C::FloorStress]));
+  const double janssen = std::exp(-4 * 0.19 * k * r[C::Height] / spec.box.length);
   std::printf("floor / cap stress with wall friction 0.3 at 400 kPa: %.4f (Janssen's bound %.4f, K %.3f)\n",
-              r[4] / r[3], janssen, k);
-  EXPECT_NEAR(r[3] / 400e3, 1.0, 0.01);
-  EXPECT_LT(r[4] / r[3], 0.99);
-  EXPECT_GT(r[4] / r[3], janssen);
+              r[C::FloorStress] / r[C::Vertical], janssen, k);
+  EXPECT_NEAR(r[C::Vertical] / 400e3, 1.0, 0.01);
+  EXPECT_LT(r[C::FloorStress] / r[C::Vertical], 0.99);
+  EXPECT_GT(r[C::FloorStress] / r[C::Vertical], janssen);
 }
 
 TEST(Oedometer, StagesAndTheirStresses) {
-  DirectShearSpec s = bead_oedometer({400e3});
+  LabSpec s = bead_oedometer({400e3});
   OedometerTest t(s);
   EXPECT_EQ(t.stages(), 1);
   EXPECT_EQ(t.stage_stress(0), 50e3);
@@ -193,8 +194,8 @@ TEST(Oedometer, ConstantRateOfStrainFollowsTheStagedCurve) {
   const std::vector<double> schedule = {200e3, 400e3, 100e3};
   OedometerTest staged(bead_oedometer(schedule));
   run_to_end(staged);
-  DirectShearSpec s = bead_oedometer(schedule);
-  s.oedometer.loading = "constant-rate";
+  LabSpec s = bead_oedometer(schedule);
+  s.settings<OedometerSpec>().loading = "constant-rate";
   OedometerTest rate(s);
   run_to_end(rate);
   ASSERT_TRUE(rate.constant_rate());
@@ -205,38 +206,38 @@ TEST(Oedometer, ConstantRateOfStrainFollowsTheStagedCurve) {
   // Each stage's last row is where the cap stress reached the stage's stress.
   std::vector<std::vector<double>> ends;
   for (std::size_t i = 0; i < rows.size(); ++i)
-    if (i + 1 == rows.size() || rows[i + 1][1] != rows[i][1]) ends.push_back(rows[i]);
+    if (i + 1 == rows.size() || rows[i + 1][C::Stage] != rows[i][C::Stage]) ends.push_back(rows[i]);
   ASSERT_EQ(ends.size(), 4u);
-  const double h0 = rows[0][8], e0 = rows[0][9], t0 = rows[0][0], v = rate.cap_speed();
-  EXPECT_EQ(rows[0][9], steps[0][9]);  // the same consolidated specimen
+  const double h0 = rows[0][C::Height], e0 = rows[0][C::VoidRatio], t0 = rows[0][C::Time], v = rate.cap_speed();
+  EXPECT_EQ(rows[0][C::VoidRatio], steps[0][C::VoidRatio]);  // the same consolidated specimen
   for (std::size_t i = 0; i < rows.size(); ++i) {
     SCOPED_TRACE(i);
     const auto& r = rows[i];
     if (i > 0) {
-      EXPECT_GE(r[1], rows[i - 1][1]);
+      EXPECT_GE(r[C::Stage], rows[i - 1][C::Stage]);
     }
-    EXPECT_NEAR(r[7], 1 - r[8] / h0, 1e-12);
-    EXPECT_NEAR((e0 - r[9]) / (1 + e0), r[7], 1e-12);
+    EXPECT_NEAR(r[C::Strain], 1 - r[C::Height] / h0, 1e-12);
+    EXPECT_NEAR((e0 - r[C::VoidRatio]) / (1 + e0), r[C::Strain], 1e-12);
     // Loading: the cap comes down at the constant speed.
-    if (r[1] <= 2) {
-      EXPECT_NEAR(h0 - r[8], v * (r[0] - t0), 1e-9 * h0);
+    if (r[C::Stage] <= 2) {
+      EXPECT_NEAR(h0 - r[C::Height], v * (r[C::Time] - t0), 1e-9 * h0);
     }
   }
   for (std::size_t k = 1; k < ends.size(); ++k) {
     SCOPED_TRACE(k);
-    const double target = ends[k][2], sv = ends[k][3];
+    const double target = ends[k][C::Target], sv = ends[k][C::Vertical];
     std::printf("stage %zu: sigma_v/target %.4f; e %.5f at a constant rate, %.5f in stages; K0 %.3f, %.3f\n", k,
-                sv / target, ends[k][9], steps[k][9], ends[k][6], steps[k][6]);
+                sv / target, ends[k][C::VoidRatio], steps[k][C::VoidRatio], ends[k][C::K0], steps[k][C::K0]);
     if (k < 3) {
       EXPECT_GE(sv, target);  // loading: reached from below
     } else {
       EXPECT_LE(sv, target);  // unloading: from above
     }
     EXPECT_NEAR(sv / target, 1.0, 0.03);
-    EXPECT_NEAR(ends[k][9], steps[k][9], 0.05 * (e0 - steps[2][9]));  // 5 % of the compression
+    EXPECT_NEAR(ends[k][C::VoidRatio], steps[k][C::VoidRatio], 0.05 * (e0 - steps[2][C::VoidRatio]));  // 5 % of the compression
     // K0: the stages' rests (creep at a constant sigma_v) move it a little,
     // most on unloading, where the lateral stress is locked in.
-    EXPECT_NEAR(ends[k][6], steps[k][6], k < 3 ? 0.05 : 0.1);
+    EXPECT_NEAR(ends[k][C::K0], steps[k][C::K0], k < 3 ? 0.05 : 0.1);
   }
   const OedometerSummary a = summarise_oedometer(rows), b = summarise_oedometer(steps);
   std::printf("Cc %.4f / %.4f, Cs %.4f / %.4f, n %.3f / %.3f (constant rate / stages)\n", a.compression_index,

@@ -25,15 +25,15 @@ TEST(PreparationSearch, SpheresReachAWholeSpecimenVoidRatio) {
   // 0.0375 gave 0.797 and 0.792: the scatter at one friction is about
   // 0.005). Asked for e = 0.80 +- 0.01, the search lands inside with a
   // friction between (measured: 2 trials, 0.12 then 0.0375).
-  DirectShearSpec spec = testing_support::sphere_spec();
+  LabSpec spec = testing_support::sphere_spec();
   spec.specimen.indices = "lab";
   spec.specimen.void_ratio = 0.80;
   spec.specimen.tolerance = 0.01;
   const Preparation p = prepare_to_target(spec);
-  ASSERT_TRUE(p.test);
-  EXPECT_EQ(p.test->phase(), ShearPhase::Consolidate);
-  EXPECT_NEAR(p.test->achieved_void_ratio(), 0.80, 0.01);
-  EXPECT_EQ(p.test->spec().specimen.deposition_friction, p.friction);
+  ASSERT_TRUE(p.specimen);
+  EXPECT_EQ(p.specimen->phase(), PreparationPhase::Consolidate);
+  EXPECT_NEAR(p.specimen->achieved_void_ratio(), 0.80, 0.01);
+  EXPECT_EQ(p.specimen->spec().specimen.deposition_friction, p.friction);
   EXPECT_EQ(p.trials.back().friction, p.friction);
   EXPECT_GT(p.friction, 0.0);
   EXPECT_LT(p.friction, kLoosestDepositionFriction);
@@ -50,7 +50,7 @@ TEST(PreparationSearch, SpheresReachAWholeSpecimenVoidRatio) {
 // lab/preparation_search.h, kLoosestSearchFriction). History: in a 6 d box the bulk e scattered by
 // +-0.03 between preparations at one friction (a bulk of about 20 grains).
 TEST(PreparationSearch, BeadsReachDr02To095OnTheirOwnIndices) {
-  DirectShearSpec spec;
+  LabSpec spec;
   apply_sand_preset(spec, "glass-beads");
   spec.numerics.threads = 1;  // ctest runs two tests at once
   IndexDensityOptions box;
@@ -63,15 +63,15 @@ TEST(PreparationSearch, BeadsReachDr02To095OnTheirOwnIndices) {
     SCOPED_TRACE(dr);
     spec.specimen.relative_density = dr;
     const Preparation p = prepare_to_target(spec);
-    ASSERT_TRUE(p.test);
-    EXPECT_NEAR(p.test->achieved_own_relative_density(), dr, 0.05);
+    ASSERT_TRUE(p.specimen);
+    EXPECT_NEAR(p.specimen->achieved_own_relative_density(), dr, 0.05);
     std::printf("Dr %.2f: reached %.3f at deposition friction %.4f after %zu trial(s)\n", dr,
-                p.test->achieved_own_relative_density(), p.friction, p.trials.size());
+                p.specimen->achieved_own_relative_density(), p.friction, p.trials.size());
   }
 }
 
 TEST(PreparationSearch, UnreachableTargetStopsWithWhatItReached) {
-  DirectShearSpec spec = testing_support::sphere_spec();
+  LabSpec spec = testing_support::sphere_spec();
   spec.specimen.void_ratio = 0.30;  // denser than spheres pack (e >= 0.5)
   spec.specimen.indices = "lab";
   PreparationSearchOptions o;
@@ -97,7 +97,7 @@ namespace {
 struct ModelPreparation {
   std::vector<std::pair<double, double>> fails;  // friction ranges that fail
   int calls = 0;
-  std::unique_ptr<DirectShearTest> operator()(const DirectShearSpec&, double mu, PreparationTrial& out) {
+  std::unique_ptr<SpecimenPreparation> operator()(const LabSpec&, double mu, PreparationTrial& out) {
     ++calls;
     for (const auto& [lo, hi] : fails)
       if (mu >= lo && mu <= hi) throw RunError("the compact phase did not come to rest in 400050 steps");
@@ -113,12 +113,12 @@ struct ModelPreparation {
 // Search options whose trials are `model`'s.
 PreparationSearchOptions trials_of(const std::shared_ptr<ModelPreparation>& model) {
   PreparationSearchOptions o;
-  o.trial = [model](const DirectShearSpec& s, double mu, PreparationTrial& t) { return (*model)(s, mu, t); };
+  o.trial = [model](const LabSpec& s, double mu, PreparationTrial& t) { return (*model)(s, mu, t); };
   return o;
 }
 
-DirectShearSpec void_ratio_target(double e) {
-  DirectShearSpec s;
+LabSpec void_ratio_target(double e) {
+  LabSpec s;
   s.specimen.void_ratio = e;
   s.specimen.tolerance = 0.002;
   return s;

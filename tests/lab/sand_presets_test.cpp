@@ -15,7 +15,7 @@ TEST(SandPresets, NamesAreThePapersFourSands) {
 
 TEST(SandPresets, CommonTable1Values) {
   for (const std::string& name : sand_preset_names()) {
-    DirectShearSpec spec;
+    LabSpec spec;
     apply_sand_preset(spec, name);
     const Material& m = spec.material.grain;
     EXPECT_EQ(spec.material.preset, name);
@@ -42,7 +42,7 @@ TEST(SandPresets, PerSandValues) {
   };
   for (const Expect& e : expected) {
     SCOPED_TRACE(e.name);
-    DirectShearSpec spec;
+    LabSpec spec;
     apply_sand_preset(spec, e.name);
     EXPECT_EQ(spec.material.grain.friction, e.friction);
     EXPECT_EQ(spec.material.grain.poisson_ratio, e.poisson);
@@ -54,7 +54,7 @@ TEST(SandPresets, PerSandValues) {
 }
 
 TEST(SandPresets, LeavesOtherFieldsAlone) {
-  DirectShearSpec spec;
+  LabSpec spec;
   spec.consolidation.normal_stress = 50e3;
   spec.material.grain.restitution = 0.7;
   spec.box.length = 0.03;
@@ -65,7 +65,7 @@ TEST(SandPresets, LeavesOtherFieldsAlone) {
 }
 
 TEST(SandPresets, UnknownNameListsTheValidOnes) {
-  DirectShearSpec spec;
+  LabSpec spec;
   try {
     apply_sand_preset(spec, "beach");
     FAIL() << "no error";

@@ -64,8 +64,8 @@ struct ScanDir {
   }
 };
 
-DirectShearSpec scan_spec(const ScanDir& d) {
-  DirectShearSpec s = testing_support::tiny_box_spec();
+LabSpec scan_spec(const ScanDir& d) {
+  LabSpec s = testing_support::tiny_box_spec();
   s.grains.scan = d.path.string();
   s.box.length = s.box.width = 4e-3;
   return s;
@@ -128,7 +128,7 @@ TEST(ScannedSpecimen, GrainsArePlacedAsScannedSpreadApartAndConsolidated) {
 
 TEST(ScannedSpecimen, BorderGrainsAreKeptWhenAsked) {
   const ScanDir scan;
-  DirectShearSpec s = scan_spec(scan);
+  LabSpec s = scan_spec(scan);
   s.grains.scan_border = "keep";
   DirectShearTest t(s);
   EXPECT_EQ(t.world().model.bodies.size(), 4u);
@@ -136,7 +136,7 @@ TEST(ScannedSpecimen, BorderGrainsAreKeptWhenAsked) {
 
 TEST(ScannedSpecimen, ABoxSmallerThanTheScanIsRefusedWithTheSizeItNeeds) {
   const ScanDir scan;
-  DirectShearSpec s = scan_spec(scan);
+  LabSpec s = scan_spec(scan);
   s.box.length = 1.5e-3;
   try {
     DirectShearTest t(s);

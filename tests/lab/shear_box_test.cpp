@@ -54,7 +54,7 @@ TEST(ShearBox, AGrainThinnerThanTheGapStaysInWhileTheGapIsClosedAndLeavesOnceItI
 }
 
 TEST(ShearBox, TheGapOpensWhenTheShearBeginsAndTheUpperHalfKeepsItsTop) {
-  DirectShearSpec spec = testing_support::tiny_box_spec();
+  LabSpec spec = testing_support::tiny_box_spec();
   DirectShearTest t(spec);
   const World& w = t.world();
   const double H = spec.box.height, gap = spec.box.gap;

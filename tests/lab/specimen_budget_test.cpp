@@ -12,8 +12,8 @@ using namespace grainlab;
 
 namespace {
 
-DirectShearSpec metre_box() {
-  DirectShearSpec s;
+LabSpec metre_box() {
+  LabSpec s;
   s.grains.preset = "glass-beads";  // spheres: the shapes are quick to make
   s.grains.shapes = 2;
   s.box.length = s.box.width = s.box.height = 1.0;

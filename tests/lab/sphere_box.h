@@ -3,14 +3,14 @@
 // and known packings to compare with.
 #pragma once
 
-#include "lab/direct_shear_spec.h"
+#include "lab/lab_spec.h"
 #include "lab/index_densities.h"
 
 namespace grainlab::testing_support {
 
 // Glass beads, 4 sizes, in a box `diameters` d_max square and 5 d_max high.
-inline DirectShearSpec sphere_spec(double diameters = 6) {
-  DirectShearSpec s;
+inline LabSpec sphere_spec(double diameters = 6) {
+  LabSpec s;
   s.grains.preset = "glass-beads";
   s.grains.shapes = 4;
   s.box.length = s.box.width = diameters * s.grains.d_max;
@@ -25,8 +25,8 @@ inline DirectShearSpec sphere_spec(double diameters = 6) {
 // 0.80 (the walls loosen a 6 d box), consolidated at 50 kPa (at 100 kPa one
 // seed's compaction never comes to rest: a bead spins at 785 rad/s about the
 // normal of its one frictional contact, which a point contact cannot stop).
-inline DirectShearSpec loose_bead_spec(const char* test) {
-  DirectShearSpec s = sphere_spec();
+inline LabSpec loose_bead_spec(const char* test) {
+  LabSpec s = sphere_spec();
   s.test = test;
   s.specimen.void_ratio = 0.80;
   s.specimen.tolerance = 0.1;

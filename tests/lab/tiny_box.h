@@ -3,12 +3,12 @@
 // seconds.
 #pragma once
 
-#include "lab/direct_shear_spec.h"
+#include "lab/lab_spec.h"
 
 namespace grainlab::testing_support {
 
-inline DirectShearSpec tiny_box_spec() {
-  DirectShearSpec spec;
+inline LabSpec tiny_box_spec() {
+  LabSpec spec;
   spec.grains.preset = "sub-angular";  // the demo's grains until 2026-12-04; the golden run's
   spec.box.length = 3.5e-3;
   spec.box.width = 3.5e-3;

@@ -12,13 +12,14 @@
 #include <vector>
 
 using namespace grainlab;
+using C = TriaxialColumn;
 
 namespace {
 
 // A row in triaxial_series_columns() order with the columns the summary reads.
 std::vector<double> row(double eps_a, double eps_v, double q, double p, double e) {
   std::vector<double> r(triaxial_series_columns().size(), 0.0);
-  r[1] = eps_a, r[2] = eps_v, r[5] = q, r[6] = p, r[7] = q / p, r[9] = e;
+  r[C::AxialStrain] = eps_a, r[C::VolumetricStrain] = eps_v, r[C::Deviator] = q, r[C::Mean] = p, r[C::Ratio] = q / p, r[C::VoidRatio] = e;
   return r;
 }
 
@@ -71,8 +72,8 @@ TEST(Triaxial, BeadsHoldTheCellPressureAndTheIdentities) {
   // strain. Measured (seed 3): side stress error of the interval means
   // 0.0016 on average over the samples and 0.0034 at worst (with the cap's
   // gain 0.05 on the sides as well: 0.0077 and 0.030).
-  DirectShearSpec spec = testing_support::loose_bead_spec("triaxial");
-  spec.triaxial.final_strain = 0.04;
+  LabSpec spec = testing_support::loose_bead_spec("triaxial");
+  spec.settings<TriaxialSpec>().final_strain = 0.04;
   spec.output.strain_interval = 0.002;
   TriaxialTest t(spec);
   while (t.advance(1000)) {
@@ -81,26 +82,26 @@ TEST(Triaxial, BeadsHoldTheCellPressureAndTheIdentities) {
   const auto& rows = t.series();
   ASSERT_GE(rows.size(), 20u);
   // The isotropic state: all five walls at sigma_3 within the tolerance.
-  EXPECT_NEAR(rows[0][3] / 50e3, 1.0, 0.01);
-  EXPECT_NEAR(rows[0][4] / 50e3, 1.0, 0.01);
-  EXPECT_NEAR(rows[0][1], 0.0, 1e-15);
-  const double e0 = rows[0][9], t0 = rows[0][0];
+  EXPECT_NEAR(rows[0][C::Sigma1] / 50e3, 1.0, 0.01);
+  EXPECT_NEAR(rows[0][C::Sigma3] / 50e3, 1.0, 0.01);
+  EXPECT_NEAR(rows[0][C::AxialStrain], 0.0, 1e-15);
+  const double e0 = rows[0][C::VoidRatio], t0 = rows[0][C::Time];
   double mean_error = 0, worst_error = 0;
   for (std::size_t i = 1; i < rows.size(); ++i) {
     SCOPED_TRACE(i);
     const auto& r = rows[i];
-    EXPECT_NEAR(r[5], r[3] - r[4], 1e-9 * r[3]);                 // q = sigma_1 - sigma_3
-    EXPECT_NEAR(r[6], (r[3] + 2 * r[4]) / 3, 1e-9 * r[3]);       // p' = (sigma_1 + 2 sigma_3) / 3
-    EXPECT_NEAR((e0 - r[9]) / (1 + e0), r[2], 1e-12);            // eps_v from the walls = from e
-    EXPECT_GT(r[1], rows[i - 1][1]);
-    mean_error += r[8] / (rows.size() - 1);
-    worst_error = std::max(worst_error, r[8]);
-    EXPECT_LT(r[8], 0.01);  // sigma_3 held within 1 % on every side at every sample
-    EXPECT_GT(r[7], 0.0);  // compression: sigma_1 > sigma_3
+    EXPECT_NEAR(r[C::Deviator], r[C::Sigma1] - r[C::Sigma3], 1e-9 * r[C::Sigma1]);                 // q = sigma_1 - sigma_3
+    EXPECT_NEAR(r[C::Mean], (r[C::Sigma1] + 2 * r[C::Sigma3]) / 3, 1e-9 * r[C::Sigma1]);       // p' = (sigma_1 + 2 sigma_3) / 3
+    EXPECT_NEAR((e0 - r[C::VoidRatio]) / (1 + e0), r[C::VolumetricStrain], 1e-12);            // eps_v from the walls = from e
+    EXPECT_GT(r[C::AxialStrain], rows[i - 1][C::AxialStrain]);
+    mean_error += r[C::SideError] / (rows.size() - 1);
+    worst_error = std::max(worst_error, r[C::SideError]);
+    EXPECT_LT(r[C::SideError], 0.01);  // sigma_3 held within 1 % on every side at every sample
+    EXPECT_GT(r[C::Ratio], 0.0);  // compression: sigma_1 > sigma_3
   }
   // The cap moves at a constant speed: eps_a grows linearly in time.
-  const double rate = rows.back()[1] / (rows.back()[0] - t0);  // axial strain per second
-  EXPECT_NEAR(rate * (rows[10][0] - t0), rows[10][1], 1e-9);
+  const double rate = rows.back()[C::AxialStrain] / (rows.back()[C::Time] - t0);  // axial strain per second
+  EXPECT_NEAR(rate * (rows[10][C::Time] - t0), rows[10][C::AxialStrain], 1e-9);
   std::printf("side stress error: mean %.4f, worst %.4f\n", mean_error, worst_error);
   const TriaxialSummary s = summarise_triaxial(rows);
   EXPECT_GT(s.peak_friction_angle_deg, 10);
@@ -116,7 +117,7 @@ double last_fifth_mean(const std::vector<std::vector<double>>& rows, int c) {
   double sum = 0;
   int n = 0;
   for (const auto& r : rows)
-    if (r[1] >= 0.8 * rows.back()[1]) sum += r[c], ++n;
+    if (r[C::AxialStrain] >= 0.8 * rows.back()[C::AxialStrain]) sum += r[c], ++n;
   return sum / n;
 }
 
@@ -127,7 +128,7 @@ std::vector<std::vector<double>> bead_triaxial(double deposition_friction, doubl
   // rest: a rattling bead spun at 412 rad/s on four barely loaded contacts,
   // which point contacts without twisting friction cannot stop (the
   // spinning-bead limitation of tests/lab/sphere_box.h).
-  DirectShearSpec s = testing_support::sphere_spec(8);
+  LabSpec s = testing_support::sphere_spec(8);
   s.seed = seed;
   s.test = "triaxial";
   s.box.height = 5.1e-3;
@@ -136,7 +137,7 @@ std::vector<std::vector<double>> bead_triaxial(double deposition_friction, doubl
   s.specimen.deposition_friction = deposition_friction;
   s.consolidation.normal_stress = 50e3;
   s.numerics.inertial_number = 4.5e-3;
-  s.triaxial.final_strain = 0.35;
+  s.settings<TriaxialSpec>().final_strain = 0.35;
   s.output.strain_interval = 0.002;
   TriaxialTest t(s);
   while (t.advance(1000)) {
@@ -156,8 +157,8 @@ TEST(Triaxial, LooseAndDenseBeadsReachOneCriticalState) {
   const auto loose = bead_triaxial(1.0, 0.85), dense = bead_triaxial(0.0, 0.60);
   ASSERT_GT(loose.size(), 100u);
   ASSERT_GT(dense.size(), 100u);
-  const double e_loose = loose[0][9], e_dense = dense[0][9];
-  const double e_cs_loose = last_fifth_mean(loose, 9), e_cs_dense = last_fifth_mean(dense, 9);
+  const double e_loose = loose[0][C::VoidRatio], e_dense = dense[0][C::VoidRatio];
+  const double e_cs_loose = last_fifth_mean(loose, C::VoidRatio), e_cs_dense = last_fifth_mean(dense, C::VoidRatio);
   const double eta_loose = summarise_triaxial(loose).critical_stress_ratio;
   const double eta_dense = summarise_triaxial(dense).critical_stress_ratio;
   std::printf("e at shear %.4f / %.4f, over the last fifth %.4f / %.4f; critical q/p' %.4f / %.4f (loose / dense)\n",
@@ -171,8 +172,8 @@ TEST(Triaxial, LooseAndDenseBeadsReachOneCriticalState) {
   double e0_sum = e_loose, e_cs_sum = e_cs_loose;
   for (int seed : {4, 5}) {
     const auto other = bead_triaxial(1.0, 0.85, seed);
-    e0_sum += other[0][9];
-    e_cs_sum += last_fifth_mean(other, 9);
+    e0_sum += other[0][C::VoidRatio];
+    e_cs_sum += last_fifth_mean(other, C::VoidRatio);
   }
   std::printf("loose over seeds 3, 4, 5: e at shear %.4f, over the last fifth %.4f\n", e0_sum / 3, e_cs_sum / 3);
   EXPECT_LT(e_cs_sum / 3, e0_sum / 3);

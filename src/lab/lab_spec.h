@@ -1,16 +1,22 @@
-// Everything a direct shear run needs, as plain values (SI units). The io
-// layer fills it from a TOML file (io/config.h); the lab runs it
-// (lab/direct_shear.h). Defaults are the embedded demo: a small box of
-// rounded grains sheared to 10 % strain under 100 kPa: 8.5 x 8.5 x 5.1 mm,
-// 10 x 6 largest grains (ASTM D3080), about 1230 grains of 200 faces, Dr 0.9
-// on their own index void ratios (io/embedded_indices.h).
+// Everything a lab test run needs, as plain values (SI units): the settings
+// every test shares (grains, material, box, specimen, consolidation,
+// numerics, output) and each registered test's own (LabSpec::settings, whose
+// structs and keys live with the test: lab/lab_registry.h). The io layer
+// fills it from a TOML file (io/config.h); the lab runs it (make_lab_test).
+// Defaults are the embedded demo: a small box of rounded grains sheared to
+// 10 % strain under 100 kPa: 8.5 x 8.5 x 5.1 mm, 10 x 6 largest grains
+// (ASTM D3080), about 1230 grains of 200 faces, Dr 0.9 on their own index
+// void ratios (io/embedded_indices.h).
 #pragma once
 
 #include "dynamics/contact_law.h"
 #include "dynamics/material.h"
 
+#include <any>
 #include <cstdint>
+#include <map>
 #include <string>
+#include <typeindex>
 #include <vector>
 
 namespace grainlab {
@@ -92,29 +98,6 @@ struct ConsolidationSpec {
                                     // averaged over the 1000 calm steps; with the kinetic energy)
 };
 
-struct ShearSpec {
-  double speed = 0;                 // m/s of the upper half; 0 = from numerics.inertial_number
-  double final_strain = 0.10;       // d_h / L
-};
-
-// The oedometer (lab/oedometer.h): after consolidation under
-// consolidation.normal_stress, the cap goes through the schedule of
-// stresses in order (a stress below the one before unloads): with loading
-// "stages" its servo holds each stress until the specimen is at rest; with
-// "constant-rate" it moves at a constant speed (from numerics.inertial_number)
-// until the cap stress reaches each stress, and reverses to unload.
-struct OedometerSpec {
-  std::vector<double> stresses = {200e3, 400e3, 800e3, 400e3, 200e3, 100e3};  // Pa, in order
-  std::string loading = "stages";  // "stages" | "constant-rate"
-};
-
-// The drained triaxial test (lab/triaxial.h): isotropic consolidation at
-// consolidation.normal_stress (sigma_3), then axial compression at the
-// inertial number's speed to this axial strain.
-struct TriaxialSpec {
-  double final_strain = 0.15;  // axial strain (H_0 - H) / H_0 at which the test ends
-};
-
 struct NumericsSpec {
   double time_step = 0;             // s; 0 = time_step_fraction x critical
   double time_step_fraction = 0.4;  // of a conservative critical step (Hertz stiffness at 1 % overlap,
@@ -132,19 +115,34 @@ struct OutputSpec {
   double snapshot_interval = 0.02;  // ParaView snapshot every this much shear strain; 0 = first and last only
 };
 
-struct DirectShearSpec {
+struct LabSpec {
   std::string test = "direct-shear";  // the lab test (lab/lab_registry.cpp): direct-shear | oedometer | triaxial
   GrainsSpec grains;
   MaterialSpec material;
   BoxSpec box;
   SpecimenSpec specimen;
   ConsolidationSpec consolidation;
-  ShearSpec shear;
-  OedometerSpec oedometer;
-  TriaxialSpec triaxial;
   NumericsSpec numerics;
   OutputSpec output;
   std::uint64_t seed = 1;
+
+  // A registered test's own settings (its struct, e.g. OedometerSpec of
+  // lab/oedometer.h), its defaults until set. Every test's are kept: a
+  // config holds them all.
+  template <typename Settings>
+  Settings& settings() {
+    std::any& a = test_settings_[typeid(Settings)];
+    if (!a.has_value()) a = Settings{};
+    return std::any_cast<Settings&>(a);
+  }
+  template <typename Settings>
+  const Settings& settings() const {
+    static const Settings defaults{};
+    const auto it = test_settings_.find(typeid(Settings));
+    return it == test_settings_.end() ? defaults : std::any_cast<const Settings&>(it->second);
+  }
+  // Every test's own settings back to their defaults.
+  void reset_test_settings() { test_settings_.clear(); }
 
   // True when the target Dr is on the grains' own indices (not the lab's, not a void ratio).
   bool targets_own_indices() const { return specimen.void_ratio <= 0 && specimen.indices == "own"; }
@@ -160,6 +158,9 @@ struct DirectShearSpec {
     const double hi = own ? specimen.own_e_max : specimen.e_max, lo = own ? specimen.own_e_min : specimen.e_min;
     return hi - specimen.relative_density * (hi - lo);
   }
+
+ private:
+  std::map<std::type_index, std::any> test_settings_;
 };
 
 }  // namespace grainlab
