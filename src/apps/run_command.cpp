@@ -45,6 +45,7 @@ struct RunOptions {
   bool quiet = false;
   bool no_report = false;
   std::string test = "direct-shear";  // for --print-defaults and --default
+  std::string law;                    // the same; "" = the default law
 };
 
 // The summary value named key (top level), 0 if the test has none.
@@ -89,8 +90,9 @@ void write_run_json(const LabTest& test, const std::filesystem::path& out, doubl
 }
 
 int run(const RunOptions& o) {
+  const ContactLaw law = o.law.empty() ? ContactLaw{} : parse_contact_law(o.law);
   if (o.print_defaults) {
-    fmt::print("{}", default_config_toml(o.test));
+    fmt::print("{}", default_config_toml(o.test, law));
     return 0;
   }
   if (o.file.empty() && !o.use_defaults)
@@ -100,7 +102,11 @@ int run(const RunOptions& o) {
     input_error("--test {} chooses the test of --default and --print-defaults; a config file names its own "
                 "(its top-level key test = \"{}\")",
                 o.test, o.test);
-  const DirectShearSpec spec = o.use_defaults ? parse_config(default_config_toml(o.test), "<embedded default>")
+  if (!o.file.empty() && !o.law.empty())
+    input_error("--law {} chooses the contact law of --default and --print-defaults; a config file names its own "
+                "(material.contact_law = \"{}\")",
+                o.law, o.law);
+  const DirectShearSpec spec = o.use_defaults ? parse_config(default_config_toml(o.test, law), "<embedded default>")
                                               : load_config(o.file);
 
   // Everything that can refuse the run happens before anything is written
@@ -264,6 +270,9 @@ Command add_run_command(CLI::App& app) {
   cmd->add_option("--test", o->test,
                   "the test of --default and --print-defaults: direct-shear (the default), oedometer or triaxial")
       ->check(CLI::IsMember(lab_test_names()));
+  cmd->add_option("--law", o->law,
+                  fmt::format("the contact law of --default and --print-defaults (which shows its parameters): {}",
+                              contact_law_names()));
   cmd->add_flag("--resume", o->resume, "continue from output.folder/checkpoint.bin (same config)");
   cmd->add_flag("--quiet", o->quiet, "no progress lines");
   cmd->add_flag("--no-report", o->no_report, "skip the HTML report at the end (write it later with grainlab report)");

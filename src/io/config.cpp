@@ -24,6 +24,7 @@
 #include <fstream>
 #include <limits>
 #include <map>
+#include <mutex>
 #include <optional>
 #include <sstream>
 #include <system_error>
@@ -38,7 +39,7 @@ namespace {
 #define GL_FIELD(table, key, member, doc) \
   SpecField { table, key, doc, [](DirectShearSpec& s) -> SpecFieldRef { return &s.member; } }
 
-const std::array kFields{
+const std::array kFixedFields{  // and, after material.friction, the laws' parameters (fields())
     GL_FIELD("", "test", test, "the lab test: \"direct-shear\" (reads [shear]) | \"oedometer\" (reads [oedometer]) | \"triaxial\" (reads [triaxial])"),
     GL_FIELD("", "seed", seed, "seed of every random choice (grain shapes, sizes, placement); same seed, same run"),
 
@@ -59,16 +60,9 @@ const std::array kFields{
              "collision shape: auto (concave pieces below convexity 0.98, else the hull) | hull | concave"),
 
     GL_FIELD("material", "preset", material.preset, "sand preset applied first: crushed-limestone | griffin | ottawa | glass-beads | \"\" (none)"),
-    GL_FIELD("material", "contact_law", material.law, "\"hertz-material\" (E, Poisson, restitution) | \"hertz\" (paper's k_n, k_t, gamma_n, gamma_t) | \"hooke\" (linear)"),
+    GL_FIELD("material", "contact_law", material.law, "the contact law (its parameters: [material.<law>])"),
     GL_FIELD("material", "density", material.grain.density, "kg/m^3, grain density"),
     GL_FIELD("material", "friction", material.grain.friction, "Coulomb friction coefficient between grains during shear"),
-    GL_FIELD("material", "youngs_modulus", material.grain.youngs_modulus, "Pa, Young's modulus (hertz-material)"),
-    GL_FIELD("material", "poisson_ratio", material.grain.poisson_ratio, "Poisson ratio, in (-1, 0.5) (hertz-material)"),
-    GL_FIELD("material", "restitution", material.grain.restitution, "coefficient of normal restitution, in (0, 1] (hertz-material)"),
-    GL_FIELD("material", "k_n", material.grain.k_n, "normal stiffness: hertz N/m^2, hooke N/m"),
-    GL_FIELD("material", "k_t", material.grain.k_t, "tangential stiffness: hertz N/m^2, hooke N/m"),
-    GL_FIELD("material", "gamma_n", material.grain.gamma_n, "normal damping: hertz 1/(m s), hooke 1/s"),
-    GL_FIELD("material", "gamma_t", material.grain.gamma_t, "tangential damping: hertz 1/(m s), hooke 1/s"),
     GL_FIELD("material", "wall_friction", material.wall_friction, "friction coefficient between grains and the box walls and cap"),
 
     GL_FIELD("box", "length", box.length, "m, along the shear direction x"),
@@ -133,9 +127,55 @@ constexpr std::array<SpecTable, 10> kTables{{
 // The grain classes grains/ can generate.
 constexpr std::array<std::string_view, 4> kGrainClasses{"glass-beads", "rounded", "sub-angular", "angular"};
 
+// The flat [material] keys of the registered laws' parameters, each key once
+// (laws that declare the same key share its value), in registry order.
+std::vector<SpecField> law_fields() {
+  std::vector<SpecField> out;
+  for (const ContactLawEntry& law : contact_laws())
+    for (const LawParameter& p : law.parameters) {
+      if (std::any_of(out.begin(), out.end(), [&](const SpecField& f) { return f.key == p.key; })) continue;
+      const LawParameter* q = &p;
+      out.push_back({"material", p.key, p.meaning,
+                     [q](DirectShearSpec& s) -> SpecFieldRef { return &parameter_value(s.material.grain, *q); }, q});
+    }
+  return out;
+}
+
+// Every key: kFixedFields with the laws' parameters after material.friction
+// (rebuilt when a law is registered at run time).
+const std::vector<SpecField>& fields() {
+  static std::mutex mutex;
+  static std::vector<SpecField> all;
+  static std::size_t laws_seen = 0;
+  static std::string law_doc;
+  std::lock_guard lock(mutex);
+  if (all.empty() || laws_seen != contact_laws().size()) {
+    laws_seen = contact_laws().size();
+    law_doc = "the contact law:";
+    for (const ContactLawEntry& law : contact_laws())
+      law_doc += fmt::format("{} {}", &law == contact_laws().data() ? "" : " |", contact_law_summary(law));
+    all.assign(kFixedFields.begin(), kFixedFields.end());
+    const auto friction = std::find_if(all.begin(), all.end(), [](const SpecField& f) {
+      return f.table == "material" && f.key == "friction";
+    });
+    const std::vector<SpecField> laws = law_fields();
+    all.insert(friction + 1, laws.begin(), laws.end());
+    for (SpecField& f : all)
+      if (f.table == "material" && f.key == "contact_law") f.doc = law_doc;
+  }
+  return all;
+}
+
+// The registered law named `name`, or null.
+const ContactLawEntry* find_law(std::string_view name) {
+  for (const ContactLawEntry& law : contact_laws())
+    if (law.name == name) return &law;
+  return nullptr;
+}
+
 }  // namespace
 
-std::span<const SpecField> spec_fields() { return kFields; }
+std::span<const SpecField> spec_fields() { return fields(); }
 std::span<const SpecTable> spec_tables() { return kTables; }
 
 // ---------------------------------------------------------------------------
@@ -183,7 +223,7 @@ std::string suggestion(std::string_view name, const std::vector<std::string>& ca
 
 std::vector<std::string> keys_of_table(std::string_view table) {
   std::vector<std::string> keys;
-  for (const SpecField& f : kFields)
+  for (const SpecField& f : fields())
     if (f.table == table) keys.emplace_back(f.key);
   return keys;
 }
@@ -195,7 +235,7 @@ std::vector<std::string> table_names() {
 }
 
 const SpecField* find_field(std::string_view table, std::string_view key) {
-  for (const SpecField& f : kFields)
+  for (const SpecField& f : fields())
     if (f.table == table && f.key == key) return &f;
   return nullptr;
 }
@@ -286,6 +326,18 @@ std::string toml_value(const SpecFieldRef& ref) {
       ref);
 }
 
+// The [material.<law>] table of spec's law: its parameters with unit,
+// meaning and valid range in comments.
+std::string law_table(DirectShearSpec& spec) {
+  const ContactLawEntry& law = *spec.material.law;
+  std::string out = fmt::format("\n# the parameters of the contact law: {}\n[material.{}]\n", contact_law_summary(law), law.name);
+  for (const LawParameter& p : law.parameters) {
+    const std::string line = fmt::format("{} = {}", p.key, toml_double(parameter_value(spec.material.grain, p)));
+    out += fmt::format("{:<36} # {}{}, {}\n", line, *p.unit ? fmt::format("{}, ", p.unit) : "", p.meaning, p.rule);
+  }
+  return out;
+}
+
 std::string write_toml(const DirectShearSpec& spec_in, bool comments) {
   DirectShearSpec spec = spec_in;  // the field refs need a mutable spec
   std::string out;
@@ -297,12 +349,15 @@ std::string write_toml(const DirectShearSpec& spec_in, bool comments) {
         spec.test);
   }
   std::string_view table = "";
-  for (const SpecField& f : kFields) {
+  for (const SpecField& f : fields()) {
     const auto t = std::find_if(kTables.begin(), kTables.end(), [&](const SpecTable& x) { return x.name == f.table; });
     // The commented defaults leave out the tables only another test reads
-    // (config.toml keeps every key: resuming compares them all).
+    // (config.toml keeps every key: resuming compares them all), and show
+    // the chosen law's parameters in its own table.
     if (comments && t != kTables.end() && !t->test.empty() && t->test != spec.test) continue;
+    if (comments && f.parameter) continue;
     if (f.table != table) {
+      if (comments && table == "material") out += law_table(spec);
       table = f.table;
       out += "\n";
       if (comments) out += fmt::format("# {}\n", t->doc);
@@ -333,7 +388,7 @@ std::string write_toml(const DirectShearSpec& spec_in, bool comments) {
 void validate_spec(const DirectShearSpec& spec_in, const std::string& source, const LineMap* lines) {
   DirectShearSpec spec = spec_in;
   // Every number must be finite (TOML allows inf and nan).
-  for (const SpecField& f : kFields) {
+  for (const SpecField& f : fields()) {
     const SpecFieldRef ref = f.ref(spec);
     if (const auto* p = std::get_if<double*>(&ref); p && !std::isfinite(**p))
       impossible(source, lines, f.dotted(), toml_double(**p), "a finite number");
@@ -399,13 +454,14 @@ void validate_spec(const DirectShearSpec& spec_in, const std::string& source, co
   const Material& m = ms.grain;
   need(m.density > 0, "material.density", m.density, "> 0 (kg/m^3; quartz is 2650)");
   need(m.friction >= 0, "material.friction", m.friction, ">= 0");
-  need(m.youngs_modulus > 0, "material.youngs_modulus", m.youngs_modulus, "> 0 (Pa; 4 GPa is 4e9)");
-  need(m.poisson_ratio > -1 && m.poisson_ratio < 0.5, "material.poisson_ratio", m.poisson_ratio, "in (-1, 0.5)");
-  need(m.restitution > 0 && m.restitution <= 1, "material.restitution", m.restitution, "in (0, 1]");
-  need(m.k_n > 0, "material.k_n", m.k_n, "> 0");
-  need(m.k_t >= 0, "material.k_t", m.k_t, ">= 0");
-  need(m.gamma_n >= 0, "material.gamma_n", m.gamma_n, ">= 0");
-  need(m.gamma_t >= 0, "material.gamma_t", m.gamma_t, ">= 0");
+  // The law's own parameters by its rules, then every other law's (a file may switch laws).
+  const auto need_law = [&](const ContactLawEntry& law) {
+    for (const LawParameter& p : law.parameters)
+      need(p.accepts(parameter_value(m, p)), fmt::format("material.{}", p.key), parameter_value(m, p),
+           parameter_rule(p));
+  };
+  need_law(*ms.law);
+  for (const ContactLawEntry& law : contact_laws()) need_law(law);
   need(ms.wall_friction >= 0, "material.wall_friction", ms.wall_friction, ">= 0");
 
   const BoxSpec& b = spec.box;
@@ -549,8 +605,31 @@ DirectShearSpec parse_config(std::string_view toml_text, const std::string& sour
   std::vector<std::pair<const SpecField*, const toml::node*>> given;
   LineMap lines;
   const auto take = [&](const SpecField* f, const toml::node& n) {
+    // A law's parameter may come twice: flat and in its law's table, or in two laws' tables that share it.
+    if (const auto it = lines.find(f->dotted()); it != lines.end()) {
+      const int here = line_of(n.source());
+      input_error("{}: {} is given twice (also on line {}); give it once.",
+                  where(source_name, std::max(here, it->second)), f->dotted(), std::min(here, it->second));
+    }
     given.emplace_back(f, &n);
     lines[f->dotted()] = line_of(n.source());
+  };
+  // [material.<law>]: the keys of that law's parameters.
+  const auto take_law_table = [&](const std::string& law_name, const toml::node& node) {
+    const ContactLawEntry* law = find_law(law_name);
+    if (!law)
+      input_error("{}: unknown table [material.{}]: a law's parameters go in [material.<law>], <law> one of {}.",
+                  where(source_name, line_of(node.source())), law_name, contact_law_names());
+    std::vector<std::string> valid;
+    for (const LawParameter& p : law->parameters) valid.emplace_back(p.key);
+    for (const auto& [k, n] : *node.as_table()) {
+      const std::string key(k.str());
+      if (std::find(valid.begin(), valid.end(), key) == valid.end())
+        input_error("{}: unknown key '{}' in [material.{}].{} The parameters of contact law \"{}\": {}.",
+                    where(source_name, line_of(k.source())), key, law_name, suggestion(key, valid), law_name,
+                    join(valid));
+      take(find_field("material", key), n);
+    }
   };
   for (const auto& [key, node] : root) {
     const std::string name(key.str());
@@ -566,6 +645,10 @@ DirectShearSpec parse_config(std::string_view toml_text, const std::string& sour
           take(f, n);
           continue;
         }
+        if (name == "material" && n.is_table()) {
+          take_law_table(sub, n);
+          continue;
+        }
         const std::vector<std::string> valid = keys_of_table(name);
         input_error("{}: unknown key '{}.{}'.{} Valid keys in [{}]: {}.", where(source_name, line_of(k.source())),
                     name, sub, suggestion(sub, valid), name, join(valid));
@@ -578,14 +661,14 @@ DirectShearSpec parse_config(std::string_view toml_text, const std::string& sour
     } else {
       // A table key written at the top level (after no header, or before the first one)?
       std::string hint;
-      for (const SpecField& f : kFields)
+      for (const SpecField& f : fields())
         if (!f.table.empty() && f.key == name) {
           hint = fmt::format(" It belongs in the [{}] table: put it below the [{}] header.", f.table, f.table);
           break;
         }
       if (hint.empty()) {
         std::vector<std::string> top = table_names();
-        for (const SpecField& f : kFields)
+        for (const SpecField& f : fields())
           if (f.table.empty()) top.emplace_back(f.key);
         hint = suggestion(name, top) + fmt::format(" Top-level keys: test, seed; tables: {}.", join(table_names()));
       }
@@ -636,9 +719,10 @@ void validate(const DirectShearSpec& spec, const std::string& source_name) {
   validate_spec(spec, source_name, nullptr);
 }
 
-std::string default_config_toml(const std::string& test) {
+std::string default_config_toml(const std::string& test, ContactLaw law) {
   DirectShearSpec spec;
   spec.test = test;
+  spec.material.law = law;
   if (test == "oedometer" || test == "triaxial") spec.output.folder = "runs/" + test;
   validate_spec(spec, "the defaults", nullptr);  // an unknown test name
   return write_toml(spec, true);
@@ -649,7 +733,7 @@ std::string to_toml(const DirectShearSpec& spec) { return write_toml(spec, false
 std::vector<std::string> config_differences(const DirectShearSpec& a_in, const DirectShearSpec& b_in) {
   DirectShearSpec a = a_in, b = b_in;
   std::vector<std::string> diff;
-  for (const SpecField& f : kFields) {
+  for (const SpecField& f : fields()) {
     const bool same = std::visit(
         [&](auto* pa) {
           using P = decltype(pa);

@@ -3,7 +3,9 @@
 // Layout: top-level `seed`, then tables [grains], [material], [box],
 // [specimen], [consolidation], [shear], [numerics], [output] whose keys are
 // the field names of lab/direct_shear_spec.h (material.contact_law is
-// MaterialSpec::law; the other material keys are those of Material).
+// MaterialSpec::law; density and friction are Material's). A contact law's
+// parameters (its parameter list, dynamics/law_parameters.h) are read from its
+// own table [material.<law>] or, as always, as flat [material] keys.
 // `material.preset` applies a sand preset (lab/sand_presets.h) first; every
 // other key in the file then overrides it. Every problem is an InputError
 // naming the file, the line, the dotted key, what is wrong and what to do.
@@ -27,9 +29,10 @@ DirectShearSpec parse_config(std::string_view toml_text, const std::string& sour
 // Throws InputError naming source_name and the dotted key of the first impossible value.
 void validate(const DirectShearSpec& spec, const std::string& source_name);
 
-// A complete config for lab test `test` (lab/lab_registry.cpp) with every key it
-// reads, its unit and meaning in a comment, and the struct defaults.
-std::string default_config_toml(const std::string& test = "direct-shear");
+// A complete config for lab test `test` (lab/lab_registry.cpp) and contact law
+// `law` with every key they read, its unit and meaning in a comment, and the
+// struct defaults (the law's parameters in its table [material.<law>]).
+std::string default_config_toml(const std::string& test = "direct-shear", ContactLaw law = {});
 
 // Every key of `spec` as TOML, exact (shortest round-trip doubles); parse_config reads it back equal.
 std::string to_toml(const DirectShearSpec& spec);

@@ -1,11 +1,14 @@
 // The one list of config keys: table, key, unit/meaning, and where the value
 // lives in a DirectShearSpec. Parsing, validation, the default config,
 // to_toml and the JSON summary all walk this list, so a key is added once.
+// The contact laws' parameters are in it as flat [material] keys, taken from
+// the registered laws' parameter lists (dynamics/law_parameters.h).
 #pragma once
 
 #include "lab/direct_shear_spec.h"
 
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -22,7 +25,8 @@ struct SpecField {
   std::string_view table;               // "" for a top-level key
   std::string_view key;                 // the struct field name
   std::string_view doc;                 // unit and meaning (one line)
-  SpecFieldRef (*ref)(DirectShearSpec&);  // where the value lives
+  std::function<SpecFieldRef(DirectShearSpec&)> ref;  // where the value lives
+  const LawParameter* parameter = nullptr;  // a contact law's parameter (dynamics/law_parameters.h), or null
 
   // "table.key" (or "key" at top level), as used in messages.
   std::string dotted() const {
