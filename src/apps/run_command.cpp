@@ -48,6 +48,7 @@ struct RunOptions {
   bool quiet = false;
   bool no_report = false;
   std::string test;                   // for --print-defaults and --default ("": the spec's default test)
+  std::string law;                    // the same; "" = the default law
   int threads = -1;                   // --threads: numerics.threads of the run (-1: the file's)
 };
 
@@ -94,8 +95,9 @@ void write_run_json(const LabTest& test, const std::filesystem::path& out, doubl
 }
 
 int run(const RunOptions& o) {
+  const ContactLaw law = o.law.empty() ? ContactLaw{} : parse_contact_law(o.law);
   if (o.print_defaults) {
-    fmt::print("{}", default_config_toml(o.test.empty() ? LabSpec{}.test : o.test));
+    fmt::print("{}", default_config_toml(o.test.empty() ? LabSpec{}.test : o.test, law));
     return 0;
   }
   if (o.print_reference) {
@@ -109,7 +111,11 @@ int run(const RunOptions& o) {
     input_error("--test {} chooses the test of --default and --print-defaults; a config file names its own "
                 "(its top-level key test = \"{}\")",
                 o.test, o.test);
-  LabSpec spec = o.use_defaults ? parse_config(default_config_toml(o.test.empty() ? LabSpec{}.test : o.test),
+  if (!o.file.empty() && !o.law.empty())
+    input_error("--law {} chooses the contact law of --default and --print-defaults; a config file names its own "
+                "(material.contact_law = \"{}\")",
+                o.law, o.law);
+  LabSpec spec = o.use_defaults ? parse_config(default_config_toml(o.test.empty() ? LabSpec{}.test : o.test, law),
                                                "<embedded default>")
                                  : load_config(o.file);
   if (o.threads >= 0) spec.numerics.threads = o.threads;  // the command line overrides the file
@@ -287,6 +293,9 @@ Command add_run_command(CLI::App& app) {
                   "the run's worker threads: sets numerics.threads, overriding the config file's (0 = automatic: "
                   "up to all cores, the fastest count timed as it runs; the bits are the same on any count)")
       ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--law", o->law,
+                  fmt::format("the contact law of --default and --print-defaults (which shows its parameters): {}",
+                              contact_law_names()));
   cmd->add_flag("--resume", o->resume, "continue from output.folder/checkpoint.bin (same config)");
   cmd->add_flag("--quiet", o->quiet, "no progress lines");
   cmd->add_flag("--no-report", o->no_report, "skip the HTML report at the end (write it later with grainlab report)");

@@ -43,8 +43,8 @@ void evaluate_block(std::vector<Contact>& list, std::size_t first, double dt, co
     c.vx[l] = s.v_rel.x(), c.vy[l] = s.v_rel.y(), c.vz[l] = s.v_rel.z();
     c.m_eff[l] = s.m_eff, c.r_eff[l] = s.r_eff, c.gain[l] = pc.geo.gain;
     c.xix[l] = pc.xi.x(), c.xiy[l] = pc.xi.y(), c.xiz[l] = pc.xi.z();
-    p.k_n[l] = s.pair->k_n, p.k_t[l] = s.pair->k_t;
-    p.gamma_n[l] = s.pair->gamma_n, p.gamma_t[l] = s.pair->gamma_t, p.friction[l] = s.pair->friction;
+    for (int i = 0; i < Law::pair_slots; ++i) p.c[i][l] = s.pair->c[i];
+    p.friction[l] = s.pair->friction;
   }
   const ForceLanes f = contact_force_lanes<Law>(p, c, dt);
   for (int l = 0; l < kLanes && first + static_cast<std::size_t>(l) < list.size(); ++l) {

@@ -10,9 +10,11 @@
 //     f_t = -K_t xi   - C_t v_t          (capped by Coulomb, mu f_n)
 // where xi is the tangential spring (m). A law lives in one file under
 // dynamics/laws/ (its derivation at the top) as a struct of static functions:
-//     name, parameters              config name; the Material fields it reads, with units
-//     validate(Material)            throws InputError for an impossible value of those fields
-//     mix(Material, Material)       PairCoefficients of a material pair (friction is mixed here)
+//     name, description             config name; one line for messages
+//     parameters                    its own parameters (dynamics/law_parameters.h): key, unit,
+//                                   meaning, valid range; validation and the config read them
+//     pair_slots                    how many of PairCoefficients::c its mix fills
+//     mix(Material, Material)       PairCoefficients::c of a material pair (mix() below adds friction)
 //     at(pair, delta, R*, m*)       K_n, C_n, K_t, C_t at this overlap (inline: the hot path;
 //                                   a template over the number type, root() for square roots,
 //                                   so that four contacts go at once: contact_lanes.h)
@@ -25,10 +27,12 @@
 #pragma once
 
 #include "core/types.h"
+#include "dynamics/law_parameters.h"
 #include "dynamics/material.h"
 
 #include <cmath>
 #include <cstdint>
+#include <span>
 #include <string>
 
 namespace grainlab {
@@ -48,9 +52,10 @@ inline double root(double x) { return std::sqrt(x); }
 // What the engine and the lab may ask of a registered law (the law's static
 // functions, behind pointers; none of them is called per contact per step).
 struct ContactLawEntry {
-  const char* name;        // config name, e.g. "hertz-material"
-  const char* parameters;  // the Material fields it reads, with units (for messages)
-  void (*validate)(const Material& m);
+  const char* name;         // config name, e.g. "hertz-material"
+  const char* description;  // one line, for messages
+  std::span<const LawParameter> parameters;
+  int pair_slots;           // slots of PairCoefficients::c that mix fills
   PairCoefficients (*mix)(const Material& a, const Material& b);
   LawCoefficients (*at)(const PairCoefficients& p, double delta, double r_eff, double m_eff);
   double (*stiffness)(const LawCoefficients& k);
@@ -83,16 +88,20 @@ ContactLaw parse_contact_law(const std::string& name);
 const char* contact_law_name(ContactLaw law);
 // Every registered name, quoted and comma-separated (for messages).
 std::string contact_law_names();
+// Every registered law's entry, in registry order.
+std::span<const ContactLawEntry> contact_laws();
+// "name" (description: key (unit), ...), for messages and documentation.
+std::string contact_law_summary(const ContactLawEntry& law);
 
 // Mixes two materials for the law: the smaller friction (the slipperier
 // surface governs: a lubricated wall stays lubricated) and the law's own rule.
 PairCoefficients mix(const Material& a, const Material& b, ContactLaw law);
 // Throws InputError naming the material and the field if a value is impossible
-// (density and friction for every law, then the law's own fields).
+// (density and friction for every law, then the law's own parameters, by
+// their rules).
 void validate(const Material& m, ContactLaw law);
-// For a law's validate(): throws InputError "material 'name': field = value is
-// impossible; it must be rule" unless ok.
-void require_material_field(const Material& m, bool ok, const char* field, double value, const char* rule);
+// "rule (unit)": how a parameter's valid range reads in messages.
+std::string parameter_rule(const LawParameter& p);
 
 // Kinematics of one touching contact at this step.
 struct ContactKinematics {

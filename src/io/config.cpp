@@ -24,6 +24,7 @@
 #include <fstream>
 #include <limits>
 #include <map>
+#include <mutex>
 #include <optional>
 #include <sstream>
 #include <system_error>
@@ -60,16 +61,9 @@ const std::array kHeadFields{
              "collision shape: auto (concave pieces below convexity 0.98, else the hull) | hull | concave"),
 
     GL_FIELD("material", "preset", material.preset, "sand preset applied first: crushed-limestone | griffin | ottawa | glass-beads | \"\" (none)"),
-    GL_FIELD("material", "contact_law", material.law, "\"hertz-material\" (E, Poisson, restitution) | \"hertz\" (paper's k_n, k_t, gamma_n, gamma_t) | \"hooke\" (linear)"),
+    GL_FIELD("material", "contact_law", material.law, "the contact law (its parameters: [material.<law>])"),
     GL_FIELD("material", "density", material.grain.density, "kg/m^3, grain density"),
     GL_FIELD("material", "friction", material.grain.friction, "Coulomb friction coefficient between grains during shear"),
-    GL_FIELD("material", "youngs_modulus", material.grain.youngs_modulus, "Pa, Young's modulus (hertz-material)"),
-    GL_FIELD("material", "poisson_ratio", material.grain.poisson_ratio, "Poisson ratio, in (-1, 0.5) (hertz-material)"),
-    GL_FIELD("material", "restitution", material.grain.restitution, "coefficient of normal restitution, in (0, 1] (hertz-material)"),
-    GL_FIELD("material", "k_n", material.grain.k_n, "normal stiffness: hertz N/m^2, hooke N/m"),
-    GL_FIELD("material", "k_t", material.grain.k_t, "tangential stiffness: hertz N/m^2, hooke N/m"),
-    GL_FIELD("material", "gamma_n", material.grain.gamma_n, "normal damping: hertz 1/(m s), hooke 1/s"),
-    GL_FIELD("material", "gamma_t", material.grain.gamma_t, "tangential damping: hertz 1/(m s), hooke 1/s"),
     GL_FIELD("material", "wall_friction", material.wall_friction, "friction coefficient between grains and the box walls and cap"),
 
     GL_FIELD("box", "length", box.length, "m, along the shear direction x"),
@@ -130,17 +124,36 @@ constexpr std::array<SpecTable, 2> kTailTables{{
 // The grain classes grains/ can generate.
 constexpr std::array<std::string_view, 4> kGrainClasses{"glass-beads", "rounded", "sub-angular", "angular"};
 
-// The key list and the tables for the tests registered now (rebuilt when one is added).
+// The flat [material] keys of the registered laws' parameters, each key once
+// (laws that declare the same key share its value), in registry order.
+std::vector<SpecField> law_fields() {
+  std::vector<SpecField> out;
+  for (const ContactLawEntry& law : contact_laws())
+    for (const LawParameter& p : law.parameters) {
+      if (std::any_of(out.begin(), out.end(), [&](const SpecField& f) { return f.key == p.key; })) continue;
+      const LawParameter* q = &p;
+      out.push_back({"material", p.key, std::string(p.meaning),
+                     [q](LabSpec& s) -> SpecFieldRef { return &parameter_value(s.material.grain, *q); }, q});
+    }
+  return out;
+}
+
+// The key list and the tables for the tests and laws registered now (rebuilt
+// when one is added): the shared keys, each test's table, and the laws'
+// parameters after material.friction.
 struct KeyList {
   std::vector<SpecField> fields;
   std::vector<SpecTable> tables;
-  std::size_t tests = 0;
+  std::size_t tests = 0, laws = 0;
+  std::string law_doc;
 };
 
 const KeyList& key_list() {
+  static std::mutex mutex;
   static KeyList k;
+  std::lock_guard lock(mutex);
   const std::vector<LabTestEntry>& entries = lab_test_entries();
-  if (!k.fields.empty() && k.tests == entries.size()) return k;
+  if (!k.fields.empty() && k.tests == entries.size() && k.laws == contact_laws().size()) return k;
   k.fields.assign(kHeadFields.begin(), kHeadFields.end());
   k.tables.assign(kHeadTables.begin(), kHeadTables.end());
   std::string doc = "the lab test:";
@@ -152,8 +165,26 @@ const KeyList& key_list() {
   k.fields.front().doc = doc;  // the key `test`
   k.fields.insert(k.fields.end(), kTailFields.begin(), kTailFields.end());
   k.tables.insert(k.tables.end(), kTailTables.begin(), kTailTables.end());
+  k.law_doc = "the contact law:";
+  for (const ContactLawEntry& law : contact_laws())
+    k.law_doc += fmt::format("{} {}", &law == contact_laws().data() ? "" : " |", contact_law_summary(law));
+  const auto friction = std::find_if(k.fields.begin(), k.fields.end(), [](const SpecField& f) {
+    return f.table == "material" && f.key == "friction";
+  });
+  const std::vector<SpecField> laws = law_fields();
+  k.fields.insert(friction + 1, laws.begin(), laws.end());
+  for (SpecField& f : k.fields)
+    if (f.table == "material" && f.key == "contact_law") f.doc = k.law_doc;
   k.tests = entries.size();
+  k.laws = contact_laws().size();
   return k;
+}
+
+// The registered law named `name`, or null.
+const ContactLawEntry* find_law(std::string_view name) {
+  for (const ContactLawEntry& law : contact_laws())
+    if (law.name == name) return &law;
+  return nullptr;
 }
 
 }  // namespace
@@ -310,6 +341,18 @@ std::string toml_value(const SpecFieldRef& ref) {
       ref);
 }
 
+// The [material.<law>] table of spec's law: its parameters with unit,
+// meaning and valid range in comments.
+std::string law_table(LabSpec& spec) {
+  const ContactLawEntry& law = *spec.material.law;
+  std::string out = fmt::format("\n# the parameters of the contact law: {}\n[material.{}]\n", contact_law_summary(law), law.name);
+  for (const LawParameter& p : law.parameters) {
+    const std::string line = fmt::format("{} = {}", p.key, toml_double(parameter_value(spec.material.grain, p)));
+    out += fmt::format("{:<36} # {}{}, {}\n", line, *p.unit ? fmt::format("{}, ", p.unit) : "", p.meaning, p.rule);
+  }
+  return out;
+}
+
 std::string write_toml(const LabSpec& spec_in, bool comments) {
   LabSpec spec = spec_in;  // the field refs need a mutable spec
   std::string out;
@@ -325,9 +368,12 @@ std::string write_toml(const LabSpec& spec_in, bool comments) {
   for (const SpecField& f : spec_fields()) {
     const auto t = std::find_if(tables.begin(), tables.end(), [&](const SpecTable& x) { return x.name == f.table; });
     // The commented defaults leave out the tables only another test reads
-    // (config.toml keeps every key: resuming compares them all).
+    // (config.toml keeps every key: resuming compares them all), and show
+    // the chosen law's parameters in its own table.
     if (comments && t != tables.end() && !t->test.empty() && t->test != spec.test) continue;
+    if (comments && f.parameter) continue;
     if (f.table != table) {
+      if (comments && table == "material") out += law_table(spec);
       table = f.table;
       out += "\n";
       if (comments) out += fmt::format("# {}\n", t->doc);
@@ -424,13 +470,14 @@ void validate_spec(const LabSpec& spec_in, const std::string& source, const Line
   const Material& m = ms.grain;
   need(m.density > 0, "material.density", m.density, "> 0 (kg/m^3; quartz is 2650)");
   need(m.friction >= 0, "material.friction", m.friction, ">= 0");
-  need(m.youngs_modulus > 0, "material.youngs_modulus", m.youngs_modulus, "> 0 (Pa; 4 GPa is 4e9)");
-  need(m.poisson_ratio > -1 && m.poisson_ratio < 0.5, "material.poisson_ratio", m.poisson_ratio, "in (-1, 0.5)");
-  need(m.restitution > 0 && m.restitution <= 1, "material.restitution", m.restitution, "in (0, 1]");
-  need(m.k_n > 0, "material.k_n", m.k_n, "> 0");
-  need(m.k_t >= 0, "material.k_t", m.k_t, ">= 0");
-  need(m.gamma_n >= 0, "material.gamma_n", m.gamma_n, ">= 0");
-  need(m.gamma_t >= 0, "material.gamma_t", m.gamma_t, ">= 0");
+  // The law's own parameters by its rules, then every other law's (a file may switch laws).
+  const auto need_law = [&](const ContactLawEntry& law) {
+    for (const LawParameter& p : law.parameters)
+      need(p.accepts(parameter_value(m, p)), fmt::format("material.{}", p.key), parameter_value(m, p),
+           parameter_rule(p));
+  };
+  need_law(*ms.law);
+  for (const ContactLawEntry& law : contact_laws()) need_law(law);
   need(ms.wall_friction >= 0, "material.wall_friction", ms.wall_friction, ">= 0");
 
   const BoxSpec& b = spec.box;
@@ -581,8 +628,31 @@ LabSpec parse_config(std::string_view toml_text, const std::string& source_name)
   std::vector<std::pair<const SpecField*, const toml::node*>> given;
   LineMap lines;
   const auto take = [&](const SpecField* f, const toml::node& n) {
+    // A law's parameter may come twice: flat and in its law's table, or in two laws' tables that share it.
+    if (const auto it = lines.find(f->dotted()); it != lines.end()) {
+      const int here = line_of(n.source());
+      input_error("{}: {} is given twice (also on line {}); give it once.",
+                  where(source_name, std::max(here, it->second)), f->dotted(), std::min(here, it->second));
+    }
     given.emplace_back(f, &n);
     lines[f->dotted()] = line_of(n.source());
+  };
+  // [material.<law>]: the keys of that law's parameters.
+  const auto take_law_table = [&](const std::string& law_name, const toml::node& node) {
+    const ContactLawEntry* law = find_law(law_name);
+    if (!law)
+      input_error("{}: unknown table [material.{}]: a law's parameters go in [material.<law>], <law> one of {}.",
+                  where(source_name, line_of(node.source())), law_name, contact_law_names());
+    std::vector<std::string> valid;
+    for (const LawParameter& p : law->parameters) valid.emplace_back(p.key);
+    for (const auto& [k, n] : *node.as_table()) {
+      const std::string key(k.str());
+      if (std::find(valid.begin(), valid.end(), key) == valid.end())
+        input_error("{}: unknown key '{}' in [material.{}].{} The parameters of contact law \"{}\": {}.",
+                    where(source_name, line_of(k.source())), key, law_name, suggestion(key, valid), law_name,
+                    join(valid));
+      take(find_field("material", key), n);
+    }
   };
   for (const auto& [key, node] : root) {
     const std::string name(key.str());
@@ -596,6 +666,10 @@ LabSpec parse_config(std::string_view toml_text, const std::string& source_name)
         const std::string sub(k.str());
         if (const SpecField* f = find_field(name, sub)) {
           take(f, n);
+          continue;
+        }
+        if (name == "material" && n.is_table()) {
+          take_law_table(sub, n);
           continue;
         }
         const std::vector<std::string> valid = keys_of_table(name);
@@ -668,9 +742,10 @@ void validate(const LabSpec& spec, const std::string& source_name) {
   validate_spec(spec, source_name, nullptr);
 }
 
-std::string default_config_toml(const std::string& test) {
+std::string default_config_toml(const std::string& test, ContactLaw law) {
   LabSpec spec;
   spec.test = test;
+  spec.material.law = law;
   spec.output.folder = "runs/" + test;  // runs/direct_shear, runs/oedometer, runs/triaxial
   std::replace(spec.output.folder.begin(), spec.output.folder.end(), '-', '_');
   validate_spec(spec, "the defaults", nullptr);  // an unknown test name

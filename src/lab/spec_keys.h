@@ -6,6 +6,7 @@
 #pragma once
 
 #include "dynamics/contact_law.h"
+#include "dynamics/law_parameters.h"
 
 #include <cstdint>
 #include <functional>
@@ -26,7 +27,8 @@ struct SpecField {
   std::string_view table;               // "" for a top-level key
   std::string_view key;                 // the struct field name
   std::string doc;                      // unit and meaning (one line)
-  SpecFieldRef (*ref)(LabSpec&);        // where the value lives
+  std::function<SpecFieldRef(LabSpec&)> ref;  // where the value lives
+  const LawParameter* parameter = nullptr;     // a contact law's parameter (dynamics/law_parameters.h), or null
 
   // "table.key" (or "key" at top level), as used in messages.
   std::string dotted() const {

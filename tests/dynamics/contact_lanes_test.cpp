@@ -81,8 +81,8 @@ TEST(ContactLanes, FourContactsAtOnceGiveWhatOneAtATimeGives) {
         lanes.vx[l] = c.v_rel.x(), lanes.vy[l] = c.v_rel.y(), lanes.vz[l] = c.v_rel.z();
         lanes.m_eff[l] = c.m_eff, lanes.r_eff[l] = c.r_eff;
         lanes.xix[l] = xi[l].x(), lanes.xiy[l] = xi[l].y(), lanes.xiz[l] = xi[l].z();
-        p.k_n[l] = pair[l].k_n, p.k_t[l] = pair[l].k_t, p.gamma_n[l] = pair[l].gamma_n;
-        p.gamma_t[l] = pair[l].gamma_t, p.friction[l] = pair[l].friction;
+        for (int i = 0; i < kPairSlots; ++i) p.c[i][l] = pair[l].c[i];
+        p.friction[l] = pair[l].friction;
       }
       const ForceLanes f = with_law(law, [&]<typename Law>() { return contact_force_lanes<Law>(p, lanes, dt); });
       for (int l = 0; l < kLanes; ++l) {

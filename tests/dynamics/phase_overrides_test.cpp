@@ -51,8 +51,7 @@ TEST(PhaseOverrides, FrictionOverrideMixesByTheMinimum) {
   EXPECT_EQ(w.model.materials[ma].friction, 0.5);  // the Model is unchanged
   EXPECT_EQ(w.model.pair(ma, ma).friction, 0.5);
   // Every other coefficient is the Model's.
-  EXPECT_EQ(w.pair(ma, mb).k_n, w.model.pair(ma, mb).k_n);
-  EXPECT_EQ(w.pair(ma, mb).gamma_t, w.model.pair(ma, mb).gamma_t);
+  EXPECT_EQ(w.pair(ma, mb).c, w.model.pair(ma, mb).c);
   w.set_overrides({});
   EXPECT_EQ(w.pair(ma, ma).friction, 0.5);
 }

@@ -1,4 +1,4 @@
-// Mixing, validation and the restitution calibration of the Hertz-material
+// Mixing and the restitution calibration of the Hertz-material
 // law. Derivations are in hertz_material.h.
 #include "dynamics/laws/hertz_material.h"
 
@@ -10,24 +10,16 @@
 
 namespace grainlab {
 
-void HertzMaterialLaw::validate(const Material& m) {
-  require_material_field(m, m.youngs_modulus > 0 && std::isfinite(m.youngs_modulus), "youngs_modulus",
-                         m.youngs_modulus, "> 0 (Pa)");
-  require_material_field(m, m.poisson_ratio > -1 && m.poisson_ratio < 0.5, "poisson_ratio", m.poisson_ratio,
-                         "in (-1, 0.5)");
-  require_material_field(m, m.restitution > 0 && m.restitution <= 1, "restitution", m.restitution, "in (0, 1]");
-}
-
 PairCoefficients HertzMaterialLaw::mix(const Material& a, const Material& b) {
   const auto inv_e = [](const Material& m) { return (1 - m.poisson_ratio * m.poisson_ratio) / m.youngs_modulus; };
   const auto inv_g = [](const Material& m) {
     return 2 * (2 - m.poisson_ratio) * (1 + m.poisson_ratio) / m.youngs_modulus;
   };
   PairCoefficients p;
-  p.k_n = 1.0 / (inv_e(a) + inv_e(b));  // E*
-  p.k_t = 1.0 / (inv_g(a) + inv_g(b));  // G*
-  p.gamma_n = restitution_to_beta(0.5 * (a.restitution + b.restitution));
-  p.gamma_t = p.gamma_n * std::sqrt(4 * p.k_t / p.k_n);  // C_t's factor over sqrt(S_n m*) (hertz_material.h)
+  p.c[e_star] = 1.0 / (inv_e(a) + inv_e(b));
+  p.c[g_star] = 1.0 / (inv_g(a) + inv_g(b));
+  p.c[beta] = restitution_to_beta(0.5 * (a.restitution + b.restitution));
+  p.c[beta_t] = p.c[beta] * std::sqrt(4 * p.c[g_star] / p.c[e_star]);  // C_t's factor over sqrt(S_n m*) (hertz_material.h)
   return p;
 }
 

@@ -8,9 +8,8 @@
 // S_t = 8 G* s:
 //     K_n = (4/3) E* s, K_t = S_t, C_n = 2 sqrt(5/6) beta sqrt(S_n m*),
 //     C_t = 2 sqrt(5/6) beta sqrt(S_t m*) = 2 sqrt(5/6) beta sqrt(4 G*/E*) sqrt(S_n m*),
-// so a pair stores (PairCoefficients) k_n = E*, k_t = G*, gamma_n = beta and
-// gamma_t = beta sqrt(4 G*/E*), and a contact takes one square root for both
-// dampers.
+// so a pair stores (PairCoefficients::c) E*, G*, beta and beta sqrt(4 G*/E*),
+// and a contact takes one square root for both dampers.
 // Elastic normal force f = (4/3) E* sqrt(R*) delta^{3/2}: tangent stiffness
 // df/ddelta = (3/2) K_n = (3/2) f/delta, stored energy (2/5) f delta.
 //
@@ -26,6 +25,7 @@
 
 #include "dynamics/contact_law.h"
 
+#include <array>
 #include <cmath>
 
 namespace grainlab {
@@ -39,11 +39,17 @@ double hertz_restitution(double beta);
 
 struct HertzMaterialLaw {
   static constexpr const char* name = "hertz-material";
-  static constexpr const char* parameters =
-      "Hertz-Mindlin from material constants: youngs_modulus (Pa), poisson_ratio, restitution";
-
-  // E > 0 finite, nu in (-1, 0.5), e in (0, 1].
-  static void validate(const Material& m);
+  static constexpr const char* description = "Hertz-Mindlin from material constants";
+  // E > 0, nu in (-1, 0.5), e in (0, 1].
+  static constexpr std::array<LawParameter, 3> parameters{{
+      {"youngs_modulus", "Pa", "Young's modulus", "> 0", law_rule::positive, 0, &Material::youngs_modulus},
+      {"poisson_ratio", "", "Poisson ratio", "in (-1, 0.5)", [](double v) { return v > -1 && v < 0.5; }, 0,
+       &Material::poisson_ratio},
+      {"restitution", "", "coefficient of normal restitution", "in (0, 1]", [](double v) { return v > 0 && v <= 1; },
+       0, &Material::restitution},
+  }};
+  // The slots of PairCoefficients::c: E*, G*, beta, beta sqrt(4 G*/E*).
+  static constexpr int e_star = 0, g_star = 1, beta = 2, beta_t = 3, pair_slots = 4;
 
   // Harmonic E* and G*, beta from the mean restitution (gamma_t: beta sqrt(4 G*/E*)).
   static PairCoefficients mix(const Material& a, const Material& b);
@@ -53,10 +59,10 @@ struct HertzMaterialLaw {
   static LawCoefficientsOf<T> at(const PairCoefficientsOf<T>& p, T delta, T r_eff, T m_eff) {
     constexpr double two_sqrt_5_6 = 1.8257418583505538;  // 2 sqrt(5/6)
     const T s = root(r_eff * delta);
-    const T s_n = 2.0 * p.k_n * s;  // k_n holds E*
-    const T s_t = 8.0 * p.k_t * s;  // k_t holds G*
+    const T s_n = 2.0 * p.c[e_star] * s;
+    const T s_t = 8.0 * p.c[g_star] * s;
     const T damper = two_sqrt_5_6 * root(s_n * m_eff);
-    return {(2.0 / 3.0) * s_n, p.gamma_n * damper, s_t, p.gamma_t * damper};
+    return {(2.0 / 3.0) * s_n, p.c[beta] * damper, s_t, p.c[beta_t] * damper};
   }
 
   // d f_n / d delta = (3/2) K_n.

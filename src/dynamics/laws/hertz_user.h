@@ -20,11 +20,10 @@ namespace grainlab {
 
 struct HertzUserLaw {
   static constexpr const char* name = "hertz";
-  static constexpr const char* parameters =
-      "Hertz with the paper's user coefficients: k_n, k_t (N/m^2), gamma_n, gamma_t (1/(m s))";
+  static constexpr const char* description = "Hertz with the paper's user coefficients";
+  static constexpr auto parameters = user_coefficient_parameters("N/m^2", "1/(m s)");
+  static constexpr int pair_slots = UserSlots::count;
 
-  // k_n > 0, k_t, gamma_n, gamma_t >= 0, all finite.
-  static void validate(const Material& m) { validate_user_coefficients(m); }
   // The mean of each user coefficient.
   static PairCoefficients mix(const Material& a, const Material& b) { return mix_user_coefficients(a, b); }
 
@@ -32,7 +31,8 @@ struct HertzUserLaw {
   template <typename T>
   static LawCoefficientsOf<T> at(const PairCoefficientsOf<T>& p, T delta, T r_eff, T m_eff) {
     const T s = root(r_eff * delta);
-    return {p.k_n * s, p.gamma_n * m_eff * s, p.k_t * s, p.gamma_t * m_eff * s};
+    using S = UserSlots;
+    return {p.c[S::k_n] * s, p.c[S::gamma_n] * m_eff * s, p.c[S::k_t] * s, p.c[S::gamma_t] * m_eff * s};
   }
 
   // d f_n / d delta = (3/2) K_n.

@@ -19,18 +19,18 @@ namespace grainlab {
 
 struct HookeLaw {
   static constexpr const char* name = "hooke";
-  static constexpr const char* parameters =
-      "linear spring-dashpot: k_n, k_t (N/m), gamma_n, gamma_t (1/s)";
+  static constexpr const char* description = "linear spring-dashpot";
+  static constexpr auto parameters = user_coefficient_parameters("N/m", "1/s");
+  static constexpr int pair_slots = UserSlots::count;
 
-  // k_n > 0, k_t, gamma_n, gamma_t >= 0, all finite.
-  static void validate(const Material& m) { validate_user_coefficients(m); }
   // The mean of each user coefficient.
   static PairCoefficients mix(const Material& a, const Material& b) { return mix_user_coefficients(a, b); }
 
   // K_n, C_n, K_t, C_t (independent of the overlap).
   template <typename T>
   static LawCoefficientsOf<T> at(const PairCoefficientsOf<T>& p, T /*delta*/, T /*r_eff*/, T m_eff) {
-    return {p.k_n, p.gamma_n * m_eff, p.k_t, p.gamma_t * m_eff};
+    using S = UserSlots;
+    return {p.c[S::k_n], p.c[S::gamma_n] * m_eff, p.c[S::k_t], p.c[S::gamma_t] * m_eff};
   }
 
   // d f_n / d delta = K_n.

@@ -1,6 +1,10 @@
 // The registered contact laws. Adding a law: write its file in this folder
-// (see dynamics/contact_law.h for what it provides), include it here and add
-// it to RegisteredLaws: one line. Its position is its ContactLaw::index().
+// (see dynamics/contact_law.h for what it provides, its own parameters
+// included), include it here and add it to RegisteredLaws: one line. Its
+// position is its ContactLaw::index(). The force loop is compiled for each
+// law of RegisteredLaws; register_contact_law() adds a law at run time (a
+// test's) whose parameters, validation, mixing and config keys work like any
+// other's, but which the World cannot step (with_law() refuses it).
 #pragma once
 
 #include "dynamics/contact_law.h"
@@ -37,6 +41,22 @@ constexpr std::size_t law_index(LawList<Laws...>) {
   return i;
 }
 
+// The table entry of a law type: its static functions behind pointers.
+template <typename Law>
+constexpr ContactLawEntry law_entry() {
+  static_assert(Law::pair_slots <= kPairSlots, "a law's pair coefficients must fit PairCoefficients::c");
+  return {Law::name,       Law::description,          Law::parameters,   Law::pair_slots,
+          &Law::mix,       &Law::template at<double>, &Law::stiffness,   &Law::tangent_stiffness,
+          &Law::elastic_energy};
+}
+
+// Adds a law after RegisteredLaws (call it before any other thread uses the
+// registry); its handle. InputError if the name is taken.
+ContactLaw register_contact_law(const ContactLawEntry& entry);
+
+// InputError: `law` was registered at run time and has no compiled force loop.
+[[noreturn]] void no_compiled_law(ContactLaw law);
+
 // Calls f.template operator()<Law>() for the law `law` is a handle to: a
 // loop written inside f is compiled once per registered law with the law's
 // functions inlined (no call through a pointer per contact; the floating
@@ -45,6 +65,7 @@ constexpr std::size_t law_index(LawList<Laws...>) {
 template <typename F, typename... Laws>
 decltype(auto) with_law_in(ContactLaw law, F& f, LawList<Laws...>) {
   using Result = decltype(f.template operator()<DefaultLaw>());
+  if (law.index() >= sizeof...(Laws)) no_compiled_law(law);
   if constexpr (std::is_void_v<Result>) {
     std::size_t i = 0;
     ((law.index() == i++ ? (f.template operator()<Laws>(), true) : false) || ...);
