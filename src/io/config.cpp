@@ -145,7 +145,6 @@ struct KeyList {
   std::vector<SpecField> fields;
   std::vector<SpecTable> tables;
   std::size_t tests = 0, laws = 0;
-  std::string law_doc;
 };
 
 const KeyList& key_list() {
@@ -165,16 +164,16 @@ const KeyList& key_list() {
   k.fields.front().doc = doc;  // the key `test`
   k.fields.insert(k.fields.end(), kTailFields.begin(), kTailFields.end());
   k.tables.insert(k.tables.end(), kTailTables.begin(), kTailTables.end());
-  k.law_doc = "the contact law:";
+  std::string law_doc = "the contact law:";
   for (const ContactLawEntry& law : contact_laws())
-    k.law_doc += fmt::format("{} {}", &law == contact_laws().data() ? "" : " |", contact_law_summary(law));
+    law_doc += fmt::format("{} {}", &law == contact_laws().data() ? "" : " |", contact_law_summary(law));
   const auto friction = std::find_if(k.fields.begin(), k.fields.end(), [](const SpecField& f) {
     return f.table == "material" && f.key == "friction";
   });
   const std::vector<SpecField> laws = law_fields();
   k.fields.insert(friction + 1, laws.begin(), laws.end());
   for (SpecField& f : k.fields)
-    if (f.table == "material" && f.key == "contact_law") f.doc = k.law_doc;
+    if (f.table == "material" && f.key == "contact_law") f.doc = law_doc;
   k.tests = entries.size();
   k.laws = contact_laws().size();
   return k;
