@@ -25,7 +25,8 @@ namespace fs = std::filesystem;
 
 struct SegmentArgs {
   std::string image, out, type, format = "stl";
-  std::vector<std::int64_t> size;
+  std::vector<std::int64_t> size, crop;
+  int bin = 1;
   std::optional<double> voxel_size;
   std::optional<float> threshold;
   bool labels = false, force = false, quiet = false;
@@ -43,7 +44,9 @@ int run_segment(const SegmentArgs& a) {
   options.threshold = a.threshold;
   ct::validate(options);
   if (a.labels && a.threshold) input_error("--threshold does not apply to a label image (--labels)");
-  ct::ImageSource source{a.image, std::nullopt, a.voxel_size};
+  ct::ImageSource source{a.image, std::nullopt, a.voxel_size, {}};
+  if (!a.crop.empty()) source.window.crop = ct::parse_crop(a.crop);
+  source.window.bin = a.bin;
   if (!a.size.empty() || !a.type.empty()) {
     if (a.size.size() != 3 || a.type.empty()) {
       input_error("a raw image needs both --size NX NY NZ and --type uint8|uint16|float32");
@@ -53,10 +56,16 @@ int run_segment(const SegmentArgs& a) {
   ct::check_output_folder(a.out, a.force);
 
   const ct::ImageHeader h = ct::read_image_header(source);
-  ct::check_memory(h.size, a.image);
-  if (!a.quiet) fmt::print(stderr, "ct: {} ({}): {} x {} x {} voxels of {:.4g} x {:.4g} x {:.4g} um (from {})\n", a.image,
-             h.format, h.size[0], h.size[1], h.size[2], h.spacing[0] * 1e6, h.spacing[1] * 1e6, h.spacing[2] * 1e6,
-             h.spacing_source);
+  ct::check_memory(h.size, a.image, h.read_buffer_bytes);
+  if (!a.quiet) {
+    fmt::print(stderr, "ct: {} ({}): {} x {} x {} voxels of {:.4g} x {:.4g} x {:.4g} um (from {})\n", a.image, h.format,
+               h.stored_size[0], h.stored_size[1], h.stored_size[2], h.spacing[0] / a.bin * 1e6,
+               h.spacing[1] / a.bin * 1e6, h.spacing[2] / a.bin * 1e6, h.spacing_source);
+    if (h.size != h.stored_size) {
+      fmt::print(stderr, "ct: reading {} x {} x {} voxels of {:.4g} um ({}{})\n", h.size[0], h.size[1], h.size[2],
+                 h.spacing[0] * 1e6, a.crop.empty() ? "" : "--crop", a.bin > 1 ? fmt::format("{}--bin {}", a.crop.empty() ? "" : ", ", a.bin) : "");
+    }
+  }
   ct::Progress progress(!a.quiet);
   ct::Segmentation s;
   if (a.labels) {
@@ -148,16 +157,32 @@ Command add_ct_command(CLI::App& app) {
       "rotation taking x, y, z onto the long, intermediate and short principal axes), volume_m3,\n"
       "equivalent_diameter_m (sphere of equal volume) and border (1: the grain touches a face of the image\n"
       "and is cut off).\n"
-      "Formats: multi-page TIFF, NRRD (.nrrd, .nhdr), MetaImage (.mha, .mhd) and headerless raw (--size, --type).\n"
-      "NRRD and MetaImage spacing and origin are read as millimetres (the ITK convention); TIFF and raw files\n"
-      "have no voxel size: give --voxel-size (it also overrides a file's).\n"
+      "Formats: multi-page TIFF, NRRD (.nrrd, .nhdr), MetaImage (.mha, .mhd), headerless raw (--size, --type),\n"
+      "and a folder of 2D TIFF (8/16-bit, float) or PNG slices, one per z, ordered by the number in their names\n"
+      "(slice_9 before slice_10), with no gap, all of one size and pixel type.\n"
+      "Units: NRRD spacing and origin are in the header's 'space units' (or 'units': m, mm, um, microns, ...),\n"
+      "millimetres when it names none; MetaImage is read as millimetres (the ITK convention). TIFF, raw files and\n"
+      "slice folders have no voxel size: give --voxel-size in metres (it also overrides a file's). A voxel size\n"
+      "outside 0.1 um - 1 mm is refused as a unit mistake.\n"
+      "Large scans: --crop and --bin read only a box, or 2x2x2 averages; slice folders and raw files are read a\n"
+      "slice at a time, and a volume that would not fit in memory (40 bytes per voxel read) is refused.\n"
       "Example: grainlab ct synth --out scan.nrrd && grainlab ct segment scan.nrrd --out grains/");
-  s->add_option("image", seg->image, "the 3D image file")->required();
+  s->add_option("image", seg->image, "the 3D image file, or a folder of 2D slices")->required();
   s->add_option("--out", seg->out, "output folder (created; must be empty unless --force)")->required();
   s->add_option("--voxel-size", seg->voxel_size, "voxel edge length in metres (e.g. 25e-6); wins over the file's");
   s->add_option("--size", seg->size, "raw files: voxels along x, y, z")->expected(3);
   s->add_option("--type", seg->type, "raw files: voxel type, little endian")
       ->check(CLI::IsMember({"uint8", "uint16", "float32"}));
+  s->add_option("--crop", seg->crop,
+                "x0,y0,z0,x1,y1,z1: read only voxels x0 <= x < x1, y0 <= y < y1, z0 <= z < z1 (voxel indices from 0, "
+                "before --bin)")
+      ->expected(6)
+      ->delimiter(',');
+  s->add_option("--bin", seg->bin,
+                "average b x b x b voxels into one while reading (2: 8x fewer voxels, voxels twice as large; a "
+                "remainder of fewer than b voxels is left out)")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
   s->add_flag("--labels", seg->labels, "the image is already segmented: 0 = pore, 1, 2, ... = grains (steps 4-6 only)");
   s->add_option("--threshold", seg->threshold, "grey level above which a voxel is solid (default: Otsu's)");
   s->add_option("--h", seg->options.h,

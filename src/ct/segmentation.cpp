@@ -47,13 +47,19 @@ std::uint64_t available_memory_bytes() {
   return 0;
 }
 
-void check_memory(const Size3& size, const std::string& image_name) {
-  const std::uint64_t need = estimated_bytes(size), have = available_memory_bytes();
+void check_memory(const Size3& size, const std::string& image_name, std::uint64_t read_buffer_bytes) {
+  const std::uint64_t need = estimated_bytes(size) + read_buffer_bytes, have = available_memory_bytes();
   if (have > 0 && need > have) {
     input_error("'{}' is too large for this machine's memory: {} x {} x {} voxels need about {:.1f} GiB for the "
-                "segmentation ({} bytes per voxel), and {:.1f} GiB is available; crop the volume to the region of "
-                "interest, bin it 2x2x2 (8x less) or use a machine with more memory",
-                image_name, size[0], size[1], size[2], need / 1073741824.0, kBytesPerVoxel, have / 1073741824.0);
+                "segmentation ({} bytes per voxel{}), and {:.1f} GiB is available; crop the volume to the region of "
+                "interest (--crop x0,y0,z0,x1,y1,z1), bin it 2x2x2 (--bin 2: 8x less) or use a machine with more "
+                "memory{}",
+                image_name, size[0], size[1], size[2], need / 1073741824.0, kBytesPerVoxel,
+                read_buffer_bytes ? fmt::format(", plus {:.1f} GiB to read the whole file before cropping",
+                                                read_buffer_bytes / 1073741824.0)
+                                  : std::string(),
+                have / 1073741824.0,
+                read_buffer_bytes ? " (a folder of slices or a raw file is read a slice at a time)" : "");
   }
 }
 

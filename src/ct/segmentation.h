@@ -78,8 +78,9 @@ std::uint64_t estimated_bytes(const Size3& size);
 // Memory the system can give now (/proc/meminfo MemAvailable), or 0 when unknown.
 std::uint64_t available_memory_bytes();
 
-// Throws InputError when estimated_bytes(size) exceeds the available memory,
-// with both figures and what to do (crop, bin 2x2x2).
-void check_memory(const Size3& size, const std::string& image_name);
+// Throws InputError when estimated_bytes(size) plus `read_buffer_bytes` (held
+// while reading, ImageHeader::read_buffer_bytes) exceeds the available memory,
+// with both figures and what to do (--crop, --bin 2).
+void check_memory(const Size3& size, const std::string& image_name, std::uint64_t read_buffer_bytes = 0);
 
 }  // namespace grainlab::ct

@@ -142,6 +142,95 @@ TEST_F(CtBadInput, NonEmptyOutputFolderNeedsForce) {
   }
 }
 
+// A small grey volume: 12 x 10 x `nz` voxels with a bright block.
+GreyVolume block_volume(std::int64_t nx, std::int64_t nz) {
+  GreyVolume v;
+  v.size = {nx, 10, nz};
+  v.spacing = Vec3::Constant(25e-6);
+  v.allocate(100.0f);
+  for (std::int64_t k = 1; k < nz - 1; ++k)
+    for (std::int64_t j = 2; j < 8; ++j)
+      for (std::int64_t i = 2; i < 8; ++i) v.at(i, j, k) = 200.0f;
+  return v;
+}
+
+TEST_F(CtBadInput, SliceFolderWithAGap) {
+  write_grey_slices(block_volume(12, 6), dir_ / "stack", "slice_", ".tif", VoxelType::UInt16);
+  fs::remove(dir_ / "stack" / "slice_0003.tif");
+  expect_refused((dir_ / "stack").string() + " --voxel-size 25e-6",
+                 "has a gap in its numbering: 1 slice(s) missing between 'slice_0002.tif' and 'slice_0004.tif'");
+}
+
+TEST_F(CtBadInput, SliceFolderOfMixedSizes) {
+  write_grey_slices(block_volume(12, 6), dir_ / "stack", "slice_", ".tif", VoxelType::UInt16);
+  write_grey_slices(block_volume(11, 6), dir_ / "other", "slice_", ".tif", VoxelType::UInt16);
+  fs::rename(dir_ / "other" / "slice_0004.tif", dir_ / "stack" / "slice_0004.tif");
+  expect_refused((dir_ / "stack").string() + " --voxel-size 25e-6",
+                 "slices of different sizes in '" + (dir_ / "stack").string() +
+                     "': 'slice_0000.tif' is 12 x 10 pixels, but 'slice_0004.tif' is 11 x 10");
+}
+
+TEST_F(CtBadInput, SliceFolderOfMixedPixelTypes) {
+  write_grey_slices(block_volume(12, 6), dir_ / "stack", "slice_", ".png", VoxelType::UInt16);
+  write_grey_slices(block_volume(12, 6), dir_ / "other", "slice_", ".png", VoxelType::UInt8);
+  fs::rename(dir_ / "other" / "slice_0002.png", dir_ / "stack" / "slice_0002.png");
+  expect_refused((dir_ / "stack").string() + " --voxel-size 25e-6",
+                 "'slice_0000.png' holds uint16, but 'slice_0002.png' holds uint8");
+}
+
+TEST_F(CtBadInput, SliceFolderWithoutVoxelSize) {
+  write_grey_slices(block_volume(12, 6), dir_ / "stack", "slice_", ".tif", VoxelType::UInt8);
+  expect_refused((dir_ / "stack").string(), "does not give a voxel size (2D slices carry no slice spacing)");
+}
+
+TEST_F(CtBadInput, NrrdWrittenInMetresWithoutItsUnit) {
+  // 2.5e-05 with no 'space units' reads as 2.5e-05 mm = 0.025 um.
+  testing::write_nrrd_by_hand(dir_ / "scan.nrrd", block_volume(12, 6), {12, 10, 6}, 25e-6, "");
+  expect_refused((dir_ / "scan.nrrd").string(),
+                 "gives voxels of 0.025 um (0.025 x 0.025 x 0.025 um, from its header field 'space directions' read "
+                 "as mm (the file has no 'space units'))");
+  const Outcome o = run_grainlab("ct segment " + (dir_ / "scan.nrrd").string() + " --out " + (dir_ / "out").string(),
+                                 dir_);
+  EXPECT_NE(o.err.find("--voxel-size 25e-6"), std::string::npos) << o.err;
+}
+
+TEST_F(CtBadInput, ImplausibleVoxelSizeFlag) {
+  write_grey_volume(block_volume(12, 6), dir_ / "scan.nrrd", VoxelType::UInt16);
+  expect_refused((dir_ / "scan.nrrd").string() + " --voxel-size 25",
+                 "--voxel-size 25 m (2.5e+07 um) is outside the voxel sizes of sand scans (0.1 to 1000 um)");
+}
+
+TEST_F(CtBadInput, NrrdUnitThatIsNotALength) {
+  testing::write_nrrd_by_hand(dir_ / "scan.nrrd", block_volume(12, 6), {12, 10, 6}, 25,
+                              "space units: \"furlong\" \"furlong\" \"furlong\"\n");
+  expect_refused((dir_ / "scan.nrrd").string(), "NRRD 'space units' \"furlong\" is not a length unit grainlab knows");
+}
+
+TEST_F(CtBadInput, NrrdHeaderSmallerThanItsData) {
+  // The header says 6 slices, the data holds 12: ITK would read half the scan as if it were all of it.
+  testing::write_nrrd_by_hand(dir_ / "scan.nrrd", block_volume(12, 12), {12, 10, 6}, 0.025, "");
+  expect_refused((dir_ / "scan.nrrd").string(),
+                 "holds more data than its header describes: 'sizes: 12 10 6' of 'type: unsigned short' (1440 "
+                 "bytes), but 2880 bytes of raw data after its header");
+  testing::write_nrrd_by_hand(dir_ / "short.nrrd", block_volume(12, 6), {12, 10, 12}, 0.025, "");
+  expect_refused((dir_ / "short.nrrd").string(), "is truncated or its header is wrong");
+}
+
+TEST_F(CtBadInput, ItkErrorsSayWhy) {
+  write_grey_volume(block_volume(12, 6), dir_ / "scan.nrrd", VoxelType::UInt16);
+  std::ifstream in(dir_ / "scan.nrrd", std::ios::binary);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  text.replace(text.find("type: unsigned short"), 20, "type: unsigned blah");
+  std::ofstream(dir_ / "bad.nrrd", std::ios::binary) << text;
+  expect_refused((dir_ / "bad.nrrd").string(), "couldn't parse type \"unsigned blah\"");
+}
+
+TEST_F(CtBadInput, CropOutsideTheImage) {
+  write_grey_volume(block_volume(12, 6), dir_ / "scan.nrrd", VoxelType::UInt16);
+  expect_refused((dir_ / "scan.nrrd").string() + " --crop 0,0,0,12,10,7",
+                 "is not inside '" + (dir_ / "scan.nrrd").string() + "' (12 x 10 x 6 voxels)");
+}
+
 TEST_F(CtBadInput, HelpTeachesTheSteps) {
   const fs::path out = dir_ / "help.txt";
   const int status = std::system((std::string(GRAINLAB_BINARY) + " ct segment --help > " + out.string()).c_str());
@@ -149,7 +238,8 @@ TEST_F(CtBadInput, HelpTeachesTheSteps) {
   std::ifstream in(out);
   std::stringstream s;
   s << in.rdbuf();
-  for (const char* word : {"Otsu", "h-maxima", "watershed", "--voxel-size", "metres", "Example:", "grains.csv"}) {
+  for (const char* word : {"Otsu", "h-maxima", "watershed", "--voxel-size", "metres", "Example:", "grains.csv",
+                           "space units", "folder of 2D", "--crop", "--bin"}) {
     EXPECT_NE(s.str().find(word), std::string::npos) << word;
   }
 }
