@@ -82,17 +82,28 @@ int run_segment(const SegmentArgs& a) {
                               : std::string("--h"));
   }
   ct::write_segmentation(s, a.out, a.force, a.format);
-  int border = 0, over_budget = 0, pieces = 0;
+  int border = 0, over_budget = 0, pieces = 0, merges = 0, splits = 0;
   for (const auto& g : s.grains) {
     border += g.border;
     over_budget += !g.within_budget;
     pieces += g.dropped_pieces;
+    merges += g.quality.likely_merge;
+    splits += g.quality.likely_split;
   }
   fmt::print("wrote {} grains ({} touching the image border) to {} in {:.1f} s; {} regions under --min-voxels {} "
              "dropped\n",
              s.grains.size(), border, a.out, clock.seconds(), s.dropped_regions, options.min_voxels);
   if (over_budget) fmt::print("  {} grains kept more than --faces {} faces to stay closed\n", over_budget, options.meshing.faces);
   if (pieces) fmt::print("  {} small separate surface pieces left out (loose fragments of a label)\n", pieces);
+  if (merges + splits == 0) {
+    fmt::print("  grain_quality.csv: no grain flagged as likely merged or split (distance maxima with h {:.2f} voxels, "
+               "convexity, contacts)\n",
+               s.quality_h);
+  } else {
+    fmt::print("  grain_quality.csv: {} grains flagged as likely merged, {} as likely split (distance maxima with h "
+               "{:.2f} voxels, convexity, contacts): look at them, and tune --h\n",
+               merges, splits, s.quality_h);
+  }
   fmt::print("  measure them with `grainlab grains stats {}`\n", a.out);
   return 0;
 }
@@ -157,6 +168,11 @@ Command add_ct_command(CLI::App& app) {
       "rotation taking x, y, z onto the long, intermediate and short principal axes), volume_m3,\n"
       "equivalent_diameter_m (sphere of equal volume) and border (1: the grain touches a face of the image\n"
       "and is cut off).\n"
+      "grain_quality.csv, to find the grains the watershed got wrong: id, voxels, volume_m3,\n"
+      "equivalent_diameter_m, convexity (volume / convex hull volume), distance_maxima (hills of the grain's own\n"
+      "distance map rising more than h), contacts and contact_area_m2 (voxel faces shared with other grains x\n"
+      "face area), largest_contact_ratio (largest contact / cross-section pi r^2 of the smaller grain), and\n"
+      "likely_merge (2+ maxima, or convexity < 0.85) and likely_split (ratio > 0.5) flags.\n"
       "Formats: multi-page TIFF, NRRD (.nrrd, .nhdr), MetaImage (.mha, .mhd), headerless raw (--size, --type),\n"
       "and a folder of 2D TIFF (8/16-bit, float) or PNG slices, one per z, ordered by the number in their names\n"
       "(slice_9 before slice_10), with no gap, all of one size and pixel type.\n"
@@ -204,7 +220,7 @@ Command add_ct_command(CLI::App& app) {
                 "Taubin smoothing passes on each surface before simplification (0: none)")
       ->capture_default_str();
   s->add_option("--format", seg->format, "mesh file format")->check(CLI::IsMember({"stl", "obj"}))->capture_default_str();
-  s->add_flag("--force", seg->force, "replace the grain meshes and grains.csv of a non-empty --out folder");
+  s->add_flag("--force", seg->force, "replace the grain meshes, grains.csv and grain_quality.csv of a non-empty --out folder");
   s->add_flag("--quiet", seg->quiet, "no progress or information lines on standard error (errors still go there)");
 
   auto* y = ct->add_subcommand(

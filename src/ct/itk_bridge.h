@@ -86,4 +86,14 @@ struct Watershed {
 Watershed distance_watershed(const std::vector<std::uint8_t>& mask, const std::array<std::int64_t, 3>& size, double h,
                              const ProgressFn& progress);
 
+// One grain's hills in the distance map of `mask` (1 = the grain, 0 = anything
+// else; give it a margin of pore): its largest inscribed radius (voxels) and,
+// for h > 0, how many hills rise more than h above their saddles, the markers
+// the watershed above would give this grain alone (at least 1).
+struct Hills {
+  double radius = 0;
+  int count = 1;
+};
+Hills distance_hills(const std::vector<std::uint8_t>& mask, const std::array<std::int64_t, 3>& size, double h);
+
 }  // namespace grainlab::ct::itk_bridge

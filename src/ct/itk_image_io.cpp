@@ -67,6 +67,22 @@ std::string reason(const itk::ExceptionObject& e) {
 
 using FloatImage = itk::Image<float, 3>;
 
+// Writes `image` in the format `path`'s extension names (zlib where the format has it and `compress`).
+template <typename Image>
+void write_image(const std::string& path, const typename Image::Pointer& image, bool compress) {
+  itk::ImageIOBase::Pointer io = image_io_for(path);
+  io->SetUseCompression(compress);
+  auto writer = itk::ImageFileWriter<Image>::New();
+  writer->SetImageIO(io);
+  writer->SetFileName(path);
+  writer->SetInput(image);
+  try {
+    writer->Update();
+  } catch (const itk::ExceptionObject& e) {
+    throw RunError(fmt::format("cannot write '{}': {}", path, reason(e)));
+  }
+}
+
 template <typename T, typename In>
 void write_as(const std::string& path, const Grid& grid, const std::vector<In>& values, bool compress) {
   using Image = itk::Image<T, 3>;
@@ -87,17 +103,7 @@ void write_as(const std::string& path, const Grid& grid, const std::vector<In>& 
   image->SetDirection(direction);
   image->Allocate();
   std::transform(values.begin(), values.end(), image->GetBufferPointer(), [](In v) { return static_cast<T>(v); });
-  itk::ImageIOBase::Pointer io = image_io_for(path);
-  io->SetUseCompression(compress);
-  auto writer = itk::ImageFileWriter<Image>::New();
-  writer->SetImageIO(io);
-  writer->SetFileName(path);
-  writer->SetInput(image);
-  try {
-    writer->Update();
-  } catch (const itk::ExceptionObject& e) {
-    throw RunError(fmt::format("cannot write '{}': {}", path, reason(e)));
-  }
+  write_image<Image>(path, image, compress);
 }
 
 std::string component_name(itk::IOComponentEnum t) {
@@ -128,15 +134,7 @@ void write_slice_as(const std::string& path, std::int64_t nx, std::int64_t ny, c
   image->SetRegions(size);
   image->Allocate();
   std::transform(values.begin(), values.end(), image->GetBufferPointer(), [](float v) { return static_cast<T>(v); });
-  auto writer = itk::ImageFileWriter<Image>::New();
-  writer->SetImageIO(image_io_for(path));
-  writer->SetFileName(path);
-  writer->SetInput(image);
-  try {
-    writer->Update();
-  } catch (const itk::ExceptionObject& e) {
-    throw RunError(fmt::format("cannot write '{}': {}", path, reason(e)));
-  }
+  write_image<Image>(path, image, false);
 }
 
 }  // namespace

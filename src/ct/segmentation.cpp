@@ -5,6 +5,7 @@
 #include "ct/itk_bridge.h"
 #include "ct/otsu.h"
 #include "ct/regions.h"
+#include "geometry/convex_hull.h"
 #include "geometry/mass_properties.h"
 #include "geometry/shape_metrics.h"
 
@@ -112,6 +113,7 @@ void mesh_and_measure(LabelVolume& labels, const std::optional<GreyField>& grey,
       Quat q(principal_frame(gm.mesh).axes);
       if (q.w() < 0) q.coeffs() = -q.coeffs();
       g.orientation = q.normalized();
+      g.quality.convexity = convexity(gm.mesh);
       g.mesh = std::move(gm.mesh);
     } catch (...) {
       errors[i] = std::current_exception();
@@ -125,6 +127,13 @@ void mesh_and_measure(LabelVolume& labels, const std::optional<GreyField>& grey,
   for (const auto& e : errors) {
     if (e) std::rethrow_exception(e);
   }
+  progress.finish();
+
+  progress.start("quality table");
+  std::vector<GrainQuality> quality(result.grains.size());
+  for (std::size_t i = 0; i < quality.size(); ++i) quality[i].convexity = result.grains[i].quality.convexity;
+  result.quality_h = assess_grains(labels, regions, result.from_labels ? options.h : result.h, quality);
+  for (std::size_t i = 0; i < quality.size(); ++i) result.grains[i].quality = quality[i];
   progress.finish();
 }
 

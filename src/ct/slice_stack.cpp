@@ -12,11 +12,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string lower(std::string s) {
-  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return s;
-}
-
 bool is_slice_file(const fs::directory_entry& e) {
   const std::string name = e.path().filename().string();
   if (name.empty() || name[0] == '.' || !e.is_regular_file()) return false;
@@ -86,7 +81,7 @@ SliceStack scan_slice_folder(const fs::path& folder) {
   for (std::size_t z = 0; z < entries.size(); ++z) {
     const Entry& e = entries[z];
     const std::string name = e.path.filename().string();
-    if (lower(e.name.before) != lower(first.name.before) ||
+    if (e.name.before != first.name.before ||
         itk_bridge::format_for(name) != itk_bridge::format_for(first.path.string())) {
       input_error("slice folder '{}' mixes two series or formats: '{}' and '{}'; keep one series of slices (one "
                   "name pattern, TIFF or PNG) per folder",

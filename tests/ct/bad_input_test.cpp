@@ -5,6 +5,8 @@
 #include "ct/image_io.h"
 #include "ct/segmentation_files.h"
 
+#include <fmt/format.h>
+
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -161,19 +163,25 @@ TEST_F(CtBadInput, SliceFolderWithAGap) {
                  "has a gap in its numbering: 1 slice(s) missing between 'slice_0002.tif' and 'slice_0004.tif'");
 }
 
+// Writes a stack of 12 x 10 x 6 uint16 slices into dir/stack, then replaces
+// slice `z` by the same slice of `other` written as `type`.
+void stack_with_one_odd_slice(const fs::path& dir, const std::string& ext, const GreyVolume& other, VoxelType type,
+                              int z) {
+  write_grey_slices(block_volume(12, 6), dir / "stack", "slice_", ext, VoxelType::UInt16);
+  write_grey_slices(other, dir / "other", "slice_", ext, type);
+  const std::string name = fmt::format("slice_{:04d}{}", z, ext);
+  fs::rename(dir / "other" / name, dir / "stack" / name);
+}
+
 TEST_F(CtBadInput, SliceFolderOfMixedSizes) {
-  write_grey_slices(block_volume(12, 6), dir_ / "stack", "slice_", ".tif", VoxelType::UInt16);
-  write_grey_slices(block_volume(11, 6), dir_ / "other", "slice_", ".tif", VoxelType::UInt16);
-  fs::rename(dir_ / "other" / "slice_0004.tif", dir_ / "stack" / "slice_0004.tif");
+  stack_with_one_odd_slice(dir_, ".tif", block_volume(11, 6), VoxelType::UInt16, 4);
   expect_refused((dir_ / "stack").string() + " --voxel-size 25e-6",
                  "slices of different sizes in '" + (dir_ / "stack").string() +
                      "': 'slice_0000.tif' is 12 x 10 pixels, but 'slice_0004.tif' is 11 x 10");
 }
 
 TEST_F(CtBadInput, SliceFolderOfMixedPixelTypes) {
-  write_grey_slices(block_volume(12, 6), dir_ / "stack", "slice_", ".png", VoxelType::UInt16);
-  write_grey_slices(block_volume(12, 6), dir_ / "other", "slice_", ".png", VoxelType::UInt8);
-  fs::rename(dir_ / "other" / "slice_0002.png", dir_ / "stack" / "slice_0002.png");
+  stack_with_one_odd_slice(dir_, ".png", block_volume(12, 6), VoxelType::UInt8, 2);
   expect_refused((dir_ / "stack").string() + " --voxel-size 25e-6",
                  "'slice_0000.png' holds uint16, but 'slice_0002.png' holds uint8");
 }
