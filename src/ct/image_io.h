@@ -67,7 +67,7 @@ struct ImageHeader {
 // Reads and checks the header: a 3D single-component image of at least 2
 // voxels along each axis, with a plausible voxel size. Throws InputError
 // naming the file, what is wrong and how to fix it (empty file, unknown
-// extension, 2D image, raw or NRRD data size not matching the layout, no
+// extension, 2D image, raw, NRRD or MetaImage data size not matching the layout, no
 // voxel size, an unknown unit, a voxel size outside kMinVoxelSize..
 // kMaxVoxelSize, a bad slice folder, a window outside the image).
 ImageHeader read_image_header(const ImageSource& source);

@@ -1,12 +1,12 @@
 #include "ct/nrrd_header.h"
 
 #include "core/error.h"
+#include "ct/declared_data.h"
 
 #include <algorithm>
 #include <array>
 #include <cctype>
 #include <fstream>
-#include <sstream>
 #include <vector>
 
 namespace grainlab::ct {
@@ -146,52 +146,21 @@ void check_nrrd_data_size(const NrrdHeader& h, const fs::path& path) {
   if (lower(field(h, "encoding")) != "raw") return;
   const int bytes = type_bytes(field(h, "type"));
   if (bytes == 0) return;  // ITK names an unknown type
-  std::istringstream sizes_in(field(h, "sizes"));
-  std::uint64_t need = static_cast<std::uint64_t>(bytes);
-  std::int64_t n = 0;
-  int axes = 0;
-  while (sizes_in >> n) {
-    if (n <= 0) return;  // ITK refuses it
-    need *= static_cast<std::uint64_t>(n);
-    ++axes;
-  }
-  if (axes == 0) return;
+  const std::uint64_t need = declared_bytes(field(h, "sizes"), bytes);
+  if (need == 0) return;  // ITK names the problem
   const std::int64_t byte_skip = field(h, "byteskip").empty() ? 0 : std::atoll(field(h, "byteskip").c_str());
   const std::int64_t line_skip = field(h, "lineskip").empty() ? 0 : std::atoll(field(h, "lineskip").c_str());
   if (line_skip != 0) return;  // data after counted lines: left to ITK
-  fs::path data = path;
-  std::uint64_t offset = h.header_bytes;
+  DeclaredData d{path, "NRRD", fmt::format("'sizes: {}' of 'type: {}'", field(h, "sizes"), field(h, "type")), need,
+                 path, h.header_bytes, byte_skip == -1, "'sizes' and 'type'"};
   const std::string data_file = field(h, "datafile");
   if (!data_file.empty()) {
     if (data_file.rfind("LIST", 0) == 0 || data_file.find('%') != std::string::npos) return;  // several files
-    data = fs::path(data_file).is_absolute() ? fs::path(data_file) : path.parent_path() / data_file;
-    offset = 0;
-    std::error_code ec;
-    if (!fs::is_regular_file(data, ec)) {
-      input_error("'{}': its data file '{}' ('data file: {}') does not exist: copy it next to the header, or fix the "
-                  "'data file' field",
-                  path.string(), data.string(), data_file);
-    }
+    d.data = fs::path(data_file).is_absolute() ? fs::path(data_file) : path.parent_path() / data_file;
+    d.offset = 0;
   }
-  std::error_code ec;
-  const std::uint64_t file = fs::file_size(data, ec);
-  if (ec) return;
-  const std::uint64_t skip = byte_skip > 0 ? static_cast<std::uint64_t>(byte_skip) : 0;
-  const std::uint64_t have = file > offset + skip ? file - offset - skip : 0;
-  const std::string where = data == path ? "after its header" : fmt::format("in '{}'", data.string());
-  const std::string described = fmt::format("'sizes: {}' of 'type: {}' ({} bytes)", field(h, "sizes"),
-                                            field(h, "type"), need);
-  if (have < need) {
-    input_error("'{}' (NRRD) is truncated or its header is wrong: it describes {}, but the file holds only {} bytes "
-                "of raw data {}; copy the file again, or fix 'sizes' and 'type' in the header",
-                path.string(), described, have, where);
-  }
-  if (have > need && byte_skip != -1) {
-    input_error("'{}' (NRRD) holds more data than its header describes: {}, but {} bytes of raw data {}; the image "
-                "read would not be the scan (wrong 'sizes' or 'type'?): fix the header so that the sizes times the "
-                "type's bytes equal the data",
-                path.string(), described, have, where);
-  }
+  if (byte_skip > 0) d.offset += static_cast<std::uint64_t>(byte_skip);
+  check_declared_data(d);
 }
 
 }  // namespace grainlab::ct

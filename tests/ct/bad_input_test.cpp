@@ -110,8 +110,10 @@ TEST_F(CtBadInput, TiffWithoutVoxelSize) {
 }
 
 TEST_F(CtBadInput, VolumeTooLargeForMemory) {
+  // Compressed data: its length says nothing, so only the memory check can refuse it from the header.
   std::ofstream(dir_ / "huge.mha") << "ObjectType = Image\nNDims = 3\nDimSize = 6000 6000 6000\nElementType = "
-                                      "MET_USHORT\nElementSpacing = 0.025 0.025 0.025\nElementDataFile = LOCAL\n";
+                                      "MET_USHORT\nCompressedData = True\nCompressedDataSize = 1\n"
+                                      "ElementSpacing = 0.025 0.025 0.025\nElementDataFile = LOCAL\n";
   expect_refused((dir_ / "huge.mha").string(), "is too large for this machine's memory: 6000 x 6000 x 6000 voxels need");
 }
 
@@ -186,6 +188,32 @@ TEST_F(CtBadInput, SliceFolderOfMixedPixelTypes) {
                  "'slice_0000.png' holds uint16, but 'slice_0002.png' holds uint8");
 }
 
+// A TIFF header alone: one uint16 strip of w x h pixels, no pixel data (the
+// headers are all that is read before the memory check).
+void write_tiff_header(const fs::path& path, std::uint32_t w, std::uint32_t h) {
+  std::string bytes = std::string("II*\0", 4) + std::string("\x08\0\0\0", 4);
+  auto put16 = [&](std::uint16_t v) { bytes.append(reinterpret_cast<const char*>(&v), 2); };
+  auto put32 = [&](std::uint32_t v) { bytes.append(reinterpret_cast<const char*>(&v), 4); };
+  const std::uint32_t tags[][2] = {{256, w}, {257, h}, {258, 16}, {259, 1}, {262, 1}, {273, 8},
+                                   {277, 1}, {278, h}, {279, w * h * 2}, {284, 1}};
+  put16(10);
+  for (const auto& t : tags) {
+    put16(static_cast<std::uint16_t>(t[0]));
+    put16(4);  // LONG
+    put32(1);
+    put32(t[1]);
+  }
+  put32(0);
+  std::ofstream(path, std::ios::binary) << bytes;
+}
+
+TEST_F(CtBadInput, SliceFolderTooLargeForMemory) {
+  fs::create_directories(dir_ / "stack");
+  for (int z = 0; z < 100; ++z) write_tiff_header(dir_ / "stack" / fmt::format("s_{:04d}.tif", z), 40000, 40000);
+  expect_refused((dir_ / "stack").string() + " --voxel-size 25e-6",
+                 "is too large for this machine's memory: 40000 x 40000 x 100 voxels need about 5960.5 GiB");
+}
+
 TEST_F(CtBadInput, SliceFolderWithoutVoxelSize) {
   write_grey_slices(block_volume(12, 6), dir_ / "stack", "slice_", ".tif", VoxelType::UInt8);
   expect_refused((dir_ / "stack").string(), "does not give a voxel size (2D slices carry no slice spacing)");
@@ -222,6 +250,22 @@ TEST_F(CtBadInput, NrrdHeaderSmallerThanItsData) {
                  "bytes), but 2880 bytes of raw data after its header");
   testing::write_nrrd_by_hand(dir_ / "short.nrrd", block_volume(12, 6), {12, 10, 12}, 0.025, "");
   expect_refused((dir_ / "short.nrrd").string(), "is truncated or its header is wrong");
+}
+
+TEST_F(CtBadInput, MetaImageHeaderSmallerThanItsData) {
+  // DimSize says 6 slices of uint16, the data (attached, then detached) holds 12.
+  const std::string header = "ObjectType = Image\nNDims = 3\nDimSize = 12 10 6\nElementType = MET_USHORT\n"
+                             "ElementSpacing = 0.025 0.025 0.025\nElementDataFile = ";
+  const std::string data(12 * 10 * 12 * 2, '\x01');
+  std::ofstream(dir_ / "scan.mha", std::ios::binary) << header << "LOCAL\n" << data;
+  expect_refused((dir_ / "scan.mha").string(),
+                 "(MetaImage) holds more data than its header describes: 'DimSize = 12 10 6' of 'ElementType = "
+                 "MET_USHORT' (1440 bytes), but 2880 bytes of raw data after its header");
+  std::ofstream(dir_ / "scan.mhd") << header << "scan_data.raw\n";
+  std::ofstream(dir_ / "scan_data.raw", std::ios::binary) << data;
+  expect_refused((dir_ / "scan.mhd").string(), "but 2880 bytes of raw data in '");
+  std::ofstream(dir_ / "scan_data.raw", std::ios::binary) << data.substr(0, 1000);
+  expect_refused((dir_ / "scan.mhd").string(), "is truncated or its header is wrong");
 }
 
 TEST_F(CtBadInput, ItkErrorsSayWhy) {
