@@ -118,12 +118,21 @@ int run_synth(const SynthArgs& a) {
   }
   const ct::SyntheticScene scene = ct::make_synthetic_scene(spec);
   const std::string ext = fs::path(a.out).extension().string();
-  if (ext == ".tif" || ext == ".tiff" || ext == ".raw") {
-    fmt::print(stderr, "ct: note: {} files hold no voxel size: segment with --voxel-size {:g}{}\n", ext,
-               a.spec.voxel_size,
+  const bool slices = ext.empty() || a.out.back() == '/';
+  if (ext == ".tif" || ext == ".tiff" || ext == ".raw" || slices) {
+    fmt::print(stderr, "ct: note: {} hold no voxel size: segment with --voxel-size {:g}{}\n",
+               slices ? "slice folders" : ext + " files", a.spec.voxel_size,
                ext == ".raw" ? fmt::format(" --size {0} {0} {0} --type {1}", a.spec.size, a.type) : "");
   }
-  ct::write_grey_volume(scene.volume, a.out, type);
+  if (slices) {
+    std::error_code ec;
+    if (fs::exists(a.out, ec) && !fs::is_empty(a.out, ec)) {
+      input_error("--out '{}' is a folder that is not empty: give a new folder for the slices", a.out);
+    }
+    ct::write_grey_slices(scene.volume, a.out, "slice_", ".tif", type);
+  } else {
+    ct::write_grey_volume(scene.volume, a.out, type);
+  }
   if (!a.truth.empty()) {
     std::error_code ec;
     fs::create_directories(a.truth, ec);
@@ -230,7 +239,10 @@ Command add_ct_command(CLI::App& app) {
       "touching, voxelized with partial volume (4x4 sample lines per voxel), blurred (Gaussian, --blur voxels) and\n"
       "with Gaussian noise (--noise, a fraction of the grain-pore contrast). Pores are grey 10000, grains 40000 (50 and 200 for uint8).\n"
       "Example: grainlab ct synth --out scan.nrrd --truth truth/ && grainlab ct segment scan.nrrd --out grains/");
-  y->add_option("--out", syn->out, "image file: .nrrd, .mha (voxel size stored, in mm), .tif or .raw")->required();
+  y->add_option("--out", syn->out,
+                "image file: .nrrd, .mha (voxel size stored, in mm), .tif or .raw; or a folder (no extension, or a "
+                "trailing /) for one 2D TIFF per slice, slice_0000.tif ...")
+      ->required();
   y->add_option("--truth", syn->truth, "folder for the true grain meshes (STL, metres)");
   y->add_option("--size", syn->spec.size, "voxels along each side")->capture_default_str();
   y->add_option("--grains", syn->spec.grains, "number of grains")->capture_default_str();

@@ -15,22 +15,8 @@ namespace grainlab::ct {
 namespace {
 
 namespace fs = std::filesystem;
-
-struct Outcome {
-  int code = 0;
-  std::string err;
-};
-
-// Runs the grainlab binary with `args`, returning its exit code and standard error.
-Outcome run_grainlab(const std::string& args, const fs::path& dir) {
-  const fs::path err = dir / "stderr.txt";
-  const std::string cmd = std::string(GRAINLAB_BINARY) + " " + args + " > /dev/null 2> " + err.string();
-  const int status = std::system(cmd.c_str());
-  std::ifstream in(err);
-  std::stringstream s;
-  s << in.rdbuf();
-  return {WEXITSTATUS(status), s.str()};
-}
+using testing::Outcome;
+using testing::run_grainlab;
 
 void write_bytes(const fs::path& p, std::size_t n) {
   std::ofstream out(p, std::ios::binary);

@@ -9,12 +9,16 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <sstream>
 #include <string>
 #include <vector>
+
+#include <sys/wait.h>
 
 namespace grainlab::ct::testing {
 
@@ -94,6 +98,22 @@ inline void expect_same_grains(const Segmentation& a, const Segmentation& b, con
     EXPECT_LT((a.grains[g].centroid - b.grains[g].centroid).norm(), 1e-12) << what;
     EXPECT_EQ(a.grains[g].mesh.faces.size(), b.grains[g].mesh.faces.size()) << what;
   }
+}
+
+struct Outcome {
+  int code = 0;
+  std::string err;
+};
+
+// Runs the grainlab binary with `args`, returning its exit code and standard error.
+inline Outcome run_grainlab(const std::string& args, const std::filesystem::path& dir) {
+  const std::filesystem::path err = dir / "stderr.txt";
+  const std::string cmd = std::string(GRAINLAB_BINARY) + " " + args + " > /dev/null 2> " + err.string();
+  const int status = std::system(cmd.c_str());
+  std::ifstream in(err);
+  std::stringstream s;
+  s << in.rdbuf();
+  return {WEXITSTATUS(status), s.str()};
 }
 
 // A fresh empty folder under the system's temporary folder.

@@ -94,5 +94,23 @@ TEST(CtStacks, SlicesAreOrderedByTheNumberInTheirNames) {
   fs::remove_all(dir);
 }
 
+TEST(CtStacks, SynthWritesASliceFolderThatSegments) {
+  const fs::path dir = testing::fresh_folder("synth_slices");
+  const std::string slices = (dir / "slices").string() + "/";
+  testing::Outcome o = testing::run_grainlab(
+      "ct synth --size 40 --grains 2 --touching 0 --grain-size 12 --out " + slices, dir);
+  ASSERT_EQ(o.code, 0) << o.err;
+  EXPECT_NE(o.err.find("segment with --voxel-size 2.5e-05"), std::string::npos) << o.err;
+  EXPECT_TRUE(fs::exists(dir / "slices" / "slice_0039.tif"));
+  o = testing::run_grainlab("ct segment " + slices + " --voxel-size 25e-6 --out " + (dir / "out").string(), dir);
+  ASSERT_EQ(o.code, 0) << o.err;
+  std::ifstream csv(dir / "out" / "grains.csv");
+  int lines = 0;
+  for (std::string line; std::getline(csv, line);) ++lines;
+  EXPECT_EQ(lines, 3) << "header and the two grains";
+  EXPECT_TRUE(fs::exists(dir / "out" / "grain_quality.csv"));
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace grainlab::ct
