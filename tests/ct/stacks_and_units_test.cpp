@@ -3,6 +3,7 @@
 // grains; the slice order is numeric, not alphabetical.
 #include "ct_fixture.h"
 
+#include "core/error.h"
 #include "ct/image_io.h"
 #include "ct/nrrd_header.h"
 #include "ct/slice_stack.h"
@@ -67,6 +68,33 @@ TEST(CtUnits, NrrdInMetresAndSliceFoldersSegmentLikeTheNrrdInMillimetres) {
   const GreyVolume f = read_grey_volume({dir / "tif32", std::nullopt, voxel, {}});
   EXPECT_EQ(f.values, scene.volume.values) << "float slices";
   EXPECT_EQ(scan_slice_folder(dir / "tif32").pixel_type, "float32");
+  fs::remove_all(dir);
+}
+
+// A detached header (.nhdr) with per-axis "spacings" in "units" of um: 25 um voxels.
+TEST(CtUnits, DetachedNrrdWithSpacingsInMicrometres) {
+  const SyntheticScene& scene = testing::small_scene();
+  const fs::path dir = testing::fresh_folder("nhdr_units");
+  write_grey_volume(scene.volume, dir / "scan.raw", VoxelType::UInt16);
+  std::ofstream(dir / "scan.nhdr") << "NRRD0004\ntype: unsigned short\ndimension: 3\nsizes: 56 56 56\n"
+                                      "spacings: 25 25 25\nunits: \"um\" \"um\" \"um\"\nendian: little\n"
+                                      "encoding: raw\ndata file: scan.raw\n";
+  const ImageHeader h = read_image_header({dir / "scan.nhdr", std::nullopt, std::nullopt, {}});
+  EXPECT_NEAR(h.spacing.x() / 25e-6, 1.0, 1e-12);
+  EXPECT_NE(h.spacing_source.find("'spacings' in the file's 'units"), std::string::npos) << h.spacing_source;
+  EXPECT_EQ(read_grey_volume({dir / "scan.nhdr", std::nullopt, std::nullopt, {}}).values,
+            as_uint16(scene.volume).values);
+  // The same header naming 40 slices of the data's 56: refused, naming the data file.
+  std::ofstream(dir / "short.nhdr") << "NRRD0004\ntype: unsigned short\ndimension: 3\nsizes: 56 56 40\n"
+                                       "spacings: 25 25 25\nunits: \"um\" \"um\" \"um\"\nendian: little\n"
+                                       "encoding: raw\ndata file: scan.raw\n";
+  try {
+    read_image_header({dir / "short.nhdr", std::nullopt, std::nullopt, {}});
+    ADD_FAILURE() << "a header describing less than its data file was read";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("holds more data than its header describes"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("scan.raw"), std::string::npos) << e.what();
+  }
   fs::remove_all(dir);
 }
 
