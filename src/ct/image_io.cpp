@@ -20,7 +20,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr double kMillimetre = 1e-3;  // MetaImage's spacing and origin unit, and NRRD's when it names none
+constexpr double kMillimetre = 1e-3;  // the unit of the NRRD and MetaImage files grainlab writes
 
 std::string lower_extension(const fs::path& p) {
   std::string ext = p.extension().string();
@@ -111,7 +111,7 @@ ImageHeader read_itk_header(const ImageSource& source) {
     if (ih.grid.spacing[a] != 1.0) unit_spacing = false;
   }
   check_size(source, h.size);
-  const bool file_has_spacing = h.format != "TIFF" && !unit_spacing;
+  const bool file_has_spacing = h.format != "TIFF" && (units.named || !unit_spacing);
   if (!source.voxel_size && file_has_spacing && !(h.spacing.minCoeff() > 0 && h.spacing.allFinite())) {
     input_error("'{}' gives a voxel spacing of ({}, {}, {}) in its header; it must be positive: fix the header or "
                 "give --voxel-size",

@@ -138,6 +138,7 @@ NrrdUnits nrrd_units(const NrrdHeader& h, const fs::path& path) {
                 path.string(), units_field, value);
   }
   u.metres_per_unit = Vec3(factor[0], factor[1], factor[2]);
+  u.named = true;
   u.source = fmt::format("header field '{}' in the file's '{}: {}'", spacing_field, units_field, value);
   return u;
 }

@@ -36,6 +36,7 @@ NrrdHeader read_nrrd_header(const std::filesystem::path& path);
 // "'spacings' read as mm (no 'units' field)".
 struct NrrdUnits {
   Vec3 metres_per_unit = Vec3::Constant(1e-3);
+  bool named = false;  // the header names the unit (a spacing of 1 is then a real 1)
   std::string source;
 };
 

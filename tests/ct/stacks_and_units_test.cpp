@@ -84,6 +84,11 @@ TEST(CtUnits, DetachedNrrdWithSpacingsInMicrometres) {
   EXPECT_NE(h.spacing_source.find("'spacings' in the file's 'units"), std::string::npos) << h.spacing_source;
   EXPECT_EQ(read_grey_volume({dir / "scan.nhdr", std::nullopt, std::nullopt, {}}).values,
             as_uint16(scene.volume).values);
+  // A spacing of exactly 1 is ITK's placeholder only when no unit is named: "1" in "mm" is read as 1 mm voxels.
+  std::ofstream(dir / "one.nhdr") << "NRRD0004\ntype: unsigned short\ndimension: 3\nsizes: 56 56 56\n"
+                                     "spacings: 1 1 1\nunits: \"mm\" \"mm\" \"mm\"\nendian: little\n"
+                                     "encoding: raw\ndata file: scan.raw\n";
+  EXPECT_NEAR(read_image_header({dir / "one.nhdr", std::nullopt, std::nullopt, {}}).spacing.x(), 1e-3, 1e-15);
   // The same header naming 40 slices of the data's 56: refused, naming the data file.
   std::ofstream(dir / "short.nhdr") << "NRRD0004\ntype: unsigned short\ndimension: 3\nsizes: 56 56 40\n"
                                        "spacings: 25 25 25\nunits: \"um\" \"um\" \"um\"\nendian: little\n"
