@@ -27,24 +27,26 @@ std::string size_text(const itk_bridge::Header& h) {
 
 }  // namespace
 
-SliceName parse_slice_name(const std::string& filename) {
+SliceName parse_slice_name(const std::string& filename, int run_from_end) {
   SliceName n;
-  const auto last_digit = filename.find_last_of("0123456789");
-  if (last_digit == std::string::npos) {
-    n.before = filename;
-    return n;
+  n.before = filename;
+  // The runs of digits, last first.
+  std::size_t end = filename.size();
+  for (int run = 0;; ++run) {
+    const auto last_digit = filename.find_last_of("0123456789", end == 0 ? 0 : end - 1);
+    if (end == 0 || last_digit == std::string::npos) return n;
+    auto first_digit = last_digit;
+    while (first_digit > 0 && std::isdigit(static_cast<unsigned char>(filename[first_digit - 1]))) --first_digit;
+    if (run == run_from_end) {
+      const std::string digits = filename.substr(first_digit, last_digit - first_digit + 1);
+      if (digits.size() > 15) return n;  // not a slice number
+      n.before = filename.substr(0, first_digit);
+      n.after = filename.substr(last_digit + 1);
+      n.number = std::stoll(digits);
+      return n;
+    }
+    end = first_digit;
   }
-  auto first_digit = last_digit;
-  while (first_digit > 0 && std::isdigit(static_cast<unsigned char>(filename[first_digit - 1]))) --first_digit;
-  const std::string digits = filename.substr(first_digit, last_digit - first_digit + 1);
-  if (digits.size() > 15) {
-    n.before = filename;
-    return n;  // not a slice number
-  }
-  n.before = filename.substr(0, first_digit);
-  n.after = filename.substr(last_digit + 1);
-  n.number = std::stoll(digits);
-  return n;
 }
 
 SliceStack scan_slice_folder(const fs::path& folder) {
@@ -57,6 +59,17 @@ SliceStack scan_slice_folder(const fs::path& folder) {
   std::error_code ec;
   for (const auto& e : fs::directory_iterator(folder, ec)) {
     if (is_slice_file(e)) entries.push_back({e.path(), parse_slice_name(e.path().filename().string())});
+  }
+  // The slice number is the last run of digits that differs between the files (scan_0012_v2.tif: 12).
+  for (int run = 1; entries.size() > 1; ++run) {
+    const bool same = std::all_of(entries.begin(), entries.end(), [&](const Entry& e) {
+      return e.name.number >= 0 && e.name.number == entries.front().name.number;
+    });
+    if (!same) break;
+    std::vector<Entry> earlier = entries;
+    for (Entry& e : earlier) e.name = parse_slice_name(e.path.filename().string(), run);
+    if (earlier.front().name.number < 0) break;
+    entries = std::move(earlier);
   }
   if (ec) input_error("cannot list the slice folder '{}': {}", where, ec.message());
   if (entries.size() < 2) {

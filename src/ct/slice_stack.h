@@ -2,8 +2,8 @@
 //
 // The slices are the folder's .tif/.tiff or .png files (other files, hidden
 // files and subfolders are ignored), ordered by the number in their names:
-// the last run of digits, so slice_9.tif comes before slice_10.tif whatever
-// the zero padding. The numbers must run without a gap and all names must
+// the last run of digits that differs between the files (scan_0012_v2.tif:
+// 12), so slice_9.tif comes before slice_10.tif whatever the zero padding. The numbers must run without a gap and all names must
 // share the text around the number (one series per folder). Every slice must
 // be a single-channel 2D image of the same width, height and pixel type. Only
 // the headers are read here; the voxels are read slice by slice (read_slice).
@@ -32,12 +32,14 @@ struct SliceStack {
 SliceStack scan_slice_folder(const std::filesystem::path& folder);
 
 // The number in a slice file's name and the text around it ("scan_", ".tif"
-// for scan_0012.tif -> 12); number -1 when the name has no digits.
+// for scan_0012.tif -> 12): the last run of digits, or with run_from_end = 1
+// the one before it (scan_0012_v2.tif -> 12), ...; number -1 when there is no
+// such run.
 struct SliceName {
   std::string before, after;
   std::int64_t number = -1;
 };
-SliceName parse_slice_name(const std::string& filename);
+SliceName parse_slice_name(const std::string& filename, int run_from_end = 0);
 
 // Slice z's voxels as float (size[0] * size[1], x fastest).
 void read_slice(const SliceStack& stack, std::int64_t z, std::vector<float>& values);

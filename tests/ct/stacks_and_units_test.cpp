@@ -108,6 +108,9 @@ TEST(CtStacks, SlicesAreOrderedByTheNumberInTheirNames) {
   EXPECT_EQ(parse_slice_name("scan_0012.tif").before, "scan_");
   EXPECT_EQ(parse_slice_name("r2_rec00000101.png").number, 101);  // the last number counts
   EXPECT_EQ(parse_slice_name("preview.tif").number, -1);
+  EXPECT_EQ(parse_slice_name("scan_0012_v2.tif", 1).number, 12);
+  EXPECT_EQ(parse_slice_name("scan_0012_v2.tif", 1).after, "_v2.tif");
+  EXPECT_EQ(parse_slice_name("scan_0012_v2.tif", 2).number, -1);
 
   GreyVolume v;
   v.size = {5, 4, 12};
@@ -124,6 +127,12 @@ TEST(CtStacks, SlicesAreOrderedByTheNumberInTheirNames) {
   EXPECT_EQ(stack.files[9].filename().string(), "s10.tif");
   const GreyVolume back = read_grey_volume({dir, std::nullopt, 10e-6, {}});
   EXPECT_EQ(back.values, v.values);
+  // A number shared by every name after the slice number (a version) is not the slice number.
+  for (int z = 0; z < 12; ++z) {
+    fs::rename(dir / fmt::format("s{}.tif", z + 1), dir / fmt::format("s{}_v2.tif", z + 1));
+  }
+  EXPECT_EQ(scan_slice_folder(dir).files[9].filename().string(), "s10_v2.tif");
+  EXPECT_EQ(read_grey_volume({dir, std::nullopt, 10e-6, {}}).values, v.values);
   fs::remove_all(dir);
 }
 
