@@ -206,7 +206,7 @@ Command add_ct_command(CLI::App& app) {
   s->add_option("--bin", seg->bin,
                 "average b x b x b voxels into one while reading (2: 8x fewer voxels, voxels twice as large; a "
                 "remainder of fewer than b voxels is left out)")
-      ->check(CLI::PositiveNumber)
+      ->check(CLI::Range(1, 64))
       ->capture_default_str();
   s->add_flag("--labels", seg->labels, "the image is already segmented: 0 = pore, 1, 2, ... = grains (steps 4-6 only)");
   s->add_option("--threshold", seg->threshold, "grey level above which a voxel is solid (default: Otsu's)");
