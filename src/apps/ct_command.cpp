@@ -25,7 +25,8 @@ namespace fs = std::filesystem;
 
 struct SegmentArgs {
   std::string image, out, type, format = "stl";
-  std::vector<std::int64_t> size;
+  std::vector<std::int64_t> size, crop;
+  int bin = 1;
   std::optional<double> voxel_size;
   std::optional<float> threshold;
   bool labels = false, force = false, quiet = false;
@@ -43,7 +44,9 @@ int run_segment(const SegmentArgs& a) {
   options.threshold = a.threshold;
   ct::validate(options);
   if (a.labels && a.threshold) input_error("--threshold does not apply to a label image (--labels)");
-  ct::ImageSource source{a.image, std::nullopt, a.voxel_size};
+  ct::ImageSource source{a.image, std::nullopt, a.voxel_size, {}};
+  if (!a.crop.empty()) source.window.crop = ct::parse_crop(a.crop);
+  source.window.bin = a.bin;
   if (!a.size.empty() || !a.type.empty()) {
     if (a.size.size() != 3 || a.type.empty()) {
       input_error("a raw image needs both --size NX NY NZ and --type uint8|uint16|float32");
@@ -53,10 +56,16 @@ int run_segment(const SegmentArgs& a) {
   ct::check_output_folder(a.out, a.force);
 
   const ct::ImageHeader h = ct::read_image_header(source);
-  ct::check_memory(h.size, a.image);
-  if (!a.quiet) fmt::print(stderr, "ct: {} ({}): {} x {} x {} voxels of {:.4g} x {:.4g} x {:.4g} um (from {})\n", a.image,
-             h.format, h.size[0], h.size[1], h.size[2], h.spacing[0] * 1e6, h.spacing[1] * 1e6, h.spacing[2] * 1e6,
-             h.spacing_source);
+  ct::check_memory(h.size, a.image, h.read_buffer_bytes);
+  if (!a.quiet) {
+    fmt::print(stderr, "ct: {} ({}): {} x {} x {} voxels of {:.4g} x {:.4g} x {:.4g} um (from {})\n", a.image, h.format,
+               h.stored_size[0], h.stored_size[1], h.stored_size[2], h.spacing[0] / a.bin * 1e6,
+               h.spacing[1] / a.bin * 1e6, h.spacing[2] / a.bin * 1e6, h.spacing_source);
+    if (h.size != h.stored_size) {
+      fmt::print(stderr, "ct: reading {} x {} x {} voxels of {:.4g} um ({}{})\n", h.size[0], h.size[1], h.size[2],
+                 h.spacing[0] * 1e6, a.crop.empty() ? "" : "--crop", a.bin > 1 ? fmt::format("{}--bin {}", a.crop.empty() ? "" : ", ", a.bin) : "");
+    }
+  }
   ct::Progress progress(!a.quiet);
   ct::Segmentation s;
   if (a.labels) {
@@ -73,17 +82,28 @@ int run_segment(const SegmentArgs& a) {
                               : std::string("--h"));
   }
   ct::write_segmentation(s, a.out, a.force, a.format);
-  int border = 0, over_budget = 0, pieces = 0;
+  int border = 0, over_budget = 0, pieces = 0, merges = 0, splits = 0;
   for (const auto& g : s.grains) {
     border += g.border;
     over_budget += !g.within_budget;
     pieces += g.dropped_pieces;
+    merges += g.quality.likely_merge;
+    splits += g.quality.likely_split;
   }
   fmt::print("wrote {} grains ({} touching the image border) to {} in {:.1f} s; {} regions under --min-voxels {} "
              "dropped\n",
              s.grains.size(), border, a.out, clock.seconds(), s.dropped_regions, options.min_voxels);
   if (over_budget) fmt::print("  {} grains kept more than --faces {} faces to stay closed\n", over_budget, options.meshing.faces);
   if (pieces) fmt::print("  {} small separate surface pieces left out (loose fragments of a label)\n", pieces);
+  if (merges + splits == 0) {
+    fmt::print("  grain_quality.csv: no grain flagged as likely merged or split (distance maxima with h {:.2f} voxels, "
+               "convexity, contacts)\n",
+               s.quality_h);
+  } else {
+    fmt::print("  grain_quality.csv: {} grains flagged as likely merged, {} as likely split (distance maxima with h "
+               "{:.2f} voxels, convexity, contacts): look at them, and tune --h\n",
+               merges, splits, s.quality_h);
+  }
   fmt::print("  measure them with `grainlab grains stats {}`\n", a.out);
   return 0;
 }
@@ -98,12 +118,21 @@ int run_synth(const SynthArgs& a) {
   }
   const ct::SyntheticScene scene = ct::make_synthetic_scene(spec);
   const std::string ext = fs::path(a.out).extension().string();
-  if (ext == ".tif" || ext == ".tiff" || ext == ".raw") {
-    fmt::print(stderr, "ct: note: {} files hold no voxel size: segment with --voxel-size {:g}{}\n", ext,
-               a.spec.voxel_size,
+  const bool slices = ext.empty() || a.out.back() == '/';
+  if (ext == ".tif" || ext == ".tiff" || ext == ".raw" || slices) {
+    fmt::print(stderr, "ct: note: {} hold no voxel size: segment with --voxel-size {:g}{}\n",
+               slices ? "slice folders" : ext + " files", a.spec.voxel_size,
                ext == ".raw" ? fmt::format(" --size {0} {0} {0} --type {1}", a.spec.size, a.type) : "");
   }
-  ct::write_grey_volume(scene.volume, a.out, type);
+  if (slices) {
+    std::error_code ec;
+    if (fs::exists(a.out, ec) && !fs::is_empty(a.out, ec)) {
+      input_error("--out '{}' is a folder that is not empty: give a new folder for the slices", a.out);
+    }
+    ct::write_grey_slices(scene.volume, a.out, "slice_", ".tif", type);
+  } else {
+    ct::write_grey_volume(scene.volume, a.out, type);
+  }
   if (!a.truth.empty()) {
     std::error_code ec;
     fs::create_directories(a.truth, ec);
@@ -148,16 +177,37 @@ Command add_ct_command(CLI::App& app) {
       "rotation taking x, y, z onto the long, intermediate and short principal axes), volume_m3,\n"
       "equivalent_diameter_m (sphere of equal volume) and border (1: the grain touches a face of the image\n"
       "and is cut off).\n"
-      "Formats: multi-page TIFF, NRRD (.nrrd, .nhdr), MetaImage (.mha, .mhd) and headerless raw (--size, --type).\n"
-      "NRRD and MetaImage spacing and origin are read as millimetres (the ITK convention); TIFF and raw files\n"
-      "have no voxel size: give --voxel-size (it also overrides a file's).\n"
+      "grain_quality.csv, to find the grains the watershed got wrong: id, voxels, volume_m3,\n"
+      "equivalent_diameter_m, convexity (volume / convex hull volume), distance_maxima (hills of the grain's own\n"
+      "distance map rising more than h), contacts and contact_area_m2 (voxel faces shared with other grains x\n"
+      "face area), largest_contact_ratio (largest contact / cross-section pi r^2 of the smaller grain), and\n"
+      "likely_merge (2+ maxima, or convexity < 0.85) and likely_split (ratio > 0.5) flags.\n"
+      "Formats: multi-page TIFF, NRRD (.nrrd, .nhdr), MetaImage (.mha, .mhd), headerless raw (--size, --type),\n"
+      "and a folder of 2D TIFF (8/16-bit, float) or PNG slices, one per z, ordered by the number in their names\n"
+      "(slice_9 before slice_10), with no gap, all of one size and pixel type.\n"
+      "Units: NRRD spacing and origin are in the header's 'space units' (or 'units': m, mm, um, microns, ...),\n"
+      "millimetres when it names none; MetaImage is read as millimetres (the ITK convention). TIFF, raw files and\n"
+      "slice folders have no voxel size: give --voxel-size in metres (it also overrides a file's). A voxel size\n"
+      "outside 0.1 um - 1 mm is refused as a unit mistake.\n"
+      "Large scans: --crop and --bin read only a box, or 2x2x2 averages; slice folders and raw files are read a\n"
+      "slice at a time, and a volume that would not fit in memory (40 bytes per voxel read) is refused.\n"
       "Example: grainlab ct synth --out scan.nrrd && grainlab ct segment scan.nrrd --out grains/");
-  s->add_option("image", seg->image, "the 3D image file")->required();
+  s->add_option("image", seg->image, "the 3D image file, or a folder of 2D slices")->required();
   s->add_option("--out", seg->out, "output folder (created; must be empty unless --force)")->required();
   s->add_option("--voxel-size", seg->voxel_size, "voxel edge length in metres (e.g. 25e-6); wins over the file's");
   s->add_option("--size", seg->size, "raw files: voxels along x, y, z")->expected(3);
   s->add_option("--type", seg->type, "raw files: voxel type, little endian")
       ->check(CLI::IsMember({"uint8", "uint16", "float32"}));
+  s->add_option("--crop", seg->crop,
+                "x0,y0,z0,x1,y1,z1: read only voxels x0 <= x < x1, y0 <= y < y1, z0 <= z < z1 (voxel indices from 0, "
+                "before --bin)")
+      ->expected(6)
+      ->delimiter(',');
+  s->add_option("--bin", seg->bin,
+                "average b x b x b voxels into one while reading (2: 8x fewer voxels, voxels twice as large; a "
+                "remainder of fewer than b voxels is left out)")
+      ->check(CLI::Range(1, 64))
+      ->capture_default_str();
   s->add_flag("--labels", seg->labels, "the image is already segmented: 0 = pore, 1, 2, ... = grains (steps 4-6 only)");
   s->add_option("--threshold", seg->threshold, "grey level above which a voxel is solid (default: Otsu's)");
   s->add_option("--h", seg->options.h,
@@ -179,7 +229,7 @@ Command add_ct_command(CLI::App& app) {
                 "Taubin smoothing passes on each surface before simplification (0: none)")
       ->capture_default_str();
   s->add_option("--format", seg->format, "mesh file format")->check(CLI::IsMember({"stl", "obj"}))->capture_default_str();
-  s->add_flag("--force", seg->force, "replace the grain meshes and grains.csv of a non-empty --out folder");
+  s->add_flag("--force", seg->force, "replace the grain meshes, grains.csv and grain_quality.csv of a non-empty --out folder");
   s->add_flag("--quiet", seg->quiet, "no progress or information lines on standard error (errors still go there)");
 
   auto* y = ct->add_subcommand(
@@ -189,7 +239,10 @@ Command add_ct_command(CLI::App& app) {
       "touching, voxelized with partial volume (4x4 sample lines per voxel), blurred (Gaussian, --blur voxels) and\n"
       "with Gaussian noise (--noise, a fraction of the grain-pore contrast). Pores are grey 10000, grains 40000 (50 and 200 for uint8).\n"
       "Example: grainlab ct synth --out scan.nrrd --truth truth/ && grainlab ct segment scan.nrrd --out grains/");
-  y->add_option("--out", syn->out, "image file: .nrrd, .mha (voxel size stored, in mm), .tif or .raw")->required();
+  y->add_option("--out", syn->out,
+                "image file: .nrrd, .mha (voxel size stored, in mm), .tif or .raw; or a folder (no extension, or a "
+                "trailing /) for one 2D TIFF per slice, slice_0000.tif ...")
+      ->required();
   y->add_option("--truth", syn->truth, "folder for the true grain meshes (STL, metres)");
   y->add_option("--size", syn->spec.size, "voxels along each side")->capture_default_str();
   y->add_option("--grains", syn->spec.grains, "number of grains")->capture_default_str();

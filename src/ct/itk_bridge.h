@@ -21,7 +21,7 @@ struct Grid {
   std::array<double, 9> direction{1, 0, 0, 0, 1, 0, 0, 0, 1};
 };
 
-// "TIFF", "NRRD", "MetaImage" for a known extension, "" otherwise.
+// "TIFF", "NRRD", "MetaImage", "PNG" (2D slices only) for a known extension, "" otherwise.
 std::string format_for(const std::string& path);
 
 // What an image file's header says.
@@ -30,6 +30,7 @@ struct Header {
   unsigned dimensions = 0;            // 2 for a single slice
   std::vector<std::int64_t> extent;   // voxels along each dimension
   unsigned components = 1;            // 3 for RGB
+  std::string component_type;         // as stored: "uint8", "uint16", "float32", "int16", ...
   Grid grid;                          // valid when dimensions == 3
 };
 
@@ -49,6 +50,11 @@ void write_values(const std::string& path, const Grid& grid, const std::vector<f
                   bool compress);
 void write_labels(const std::string& path, const Grid& grid, const std::vector<std::uint32_t>& values,
                   bool compress);
+
+// Writes one 2D slice of nx x ny voxels (x fastest) as TIFF or PNG (by the
+// extension; PNG holds only uint8 and uint16). Throws RunError.
+void write_slice(const std::string& path, std::int64_t nx, std::int64_t ny, const std::vector<float>& values,
+                 Stored stored);
 
 // Progress callback: fraction done, 0-1.
 using ProgressFn = std::function<void(double)>;
@@ -79,5 +85,15 @@ struct Watershed {
 
 Watershed distance_watershed(const std::vector<std::uint8_t>& mask, const std::array<std::int64_t, 3>& size, double h,
                              const ProgressFn& progress);
+
+// One grain's hills in the distance map of `mask` (1 = the grain, 0 = anything
+// else; give it a margin of pore): its largest inscribed radius (voxels) and,
+// for h > 0, how many hills rise more than h above their saddles, the markers
+// the watershed above would give this grain alone (at least 1).
+struct Hills {
+  double radius = 0;
+  int count = 1;
+};
+Hills distance_hills(const std::vector<std::uint8_t>& mask, const std::array<std::int64_t, 3>& size, double h);
 
 }  // namespace grainlab::ct::itk_bridge

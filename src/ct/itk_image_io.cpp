@@ -10,6 +10,7 @@
 #include <itkImageFileWriter.h>
 #include <itkMetaImageIO.h>
 #include <itkNrrdImageIO.h>
+#include <itkPNGImageIO.h>
 #include <itkTIFFImageIO.h>
 
 #include <algorithm>
@@ -33,18 +34,54 @@ itk::ImageIOBase::Pointer image_io_for(const std::string& path) {
   if (f == "TIFF") return itk::TIFFImageIO::New().GetPointer();
   if (f == "NRRD") return itk::NrrdImageIO::New().GetPointer();
   if (f == "MetaImage") return itk::MetaImageIO::New().GetPointer();
+  if (f == "PNG") return itk::PNGImageIO::New().GetPointer();
   input_error("'{}': no ITK reader for this extension", path);
 }
 
-// The first line of an ITK exception's description.
+// The reason in an ITK exception's description, without ITK's "ITK ERROR:
+// Class(0x...): " prefix. NRRD errors come as a chain of teem messages
+// ("[nrrd] function: message"), the last one the cause: "Read: Error reading
+// f.nrrd: fread got only 64000 2-sized things, not 128000 (50% of expected)".
 std::string reason(const itk::ExceptionObject& e) {
+  std::vector<std::string> lines;
   std::string d = e.GetDescription();
-  const auto nl = d.find('\n');
-  if (nl != std::string::npos) d.resize(nl);
-  return d;
+  for (std::size_t start = 0; start < d.size();) {
+    const auto nl = d.find('\n', start);
+    std::string line = d.substr(start, nl == std::string::npos ? std::string::npos : nl - start);
+    start = nl == std::string::npos ? d.size() : nl + 1;
+    if (line.find_first_not_of(" \t\r") != std::string::npos) lines.push_back(line);
+  }
+  if (lines.empty()) return "no reason given by ITK";
+  std::string first = lines.front();
+  const auto paren = first.find("): ");
+  if (first.find("ERROR") != std::string::npos && paren != std::string::npos) first = first.substr(paren + 3);
+  if (lines.size() == 1) return first;
+  std::string cause = lines.back();
+  if (cause.rfind("[", 0) == 0) {  // "[nrrd] function: message"
+    const auto colon = cause.find(": ");
+    cause = colon == std::string::npos ? cause : cause.substr(colon + 2);
+  }
+  if (!first.empty() && first.back() == ':') first.pop_back();
+  return first + ": " + cause;
 }
 
 using FloatImage = itk::Image<float, 3>;
+
+// Writes `image` in the format `path`'s extension names (zlib where the format has it and `compress`).
+template <typename Image>
+void write_image(const std::string& path, const typename Image::Pointer& image, bool compress) {
+  itk::ImageIOBase::Pointer io = image_io_for(path);
+  io->SetUseCompression(compress);
+  auto writer = itk::ImageFileWriter<Image>::New();
+  writer->SetImageIO(io);
+  writer->SetFileName(path);
+  writer->SetInput(image);
+  try {
+    writer->Update();
+  } catch (const itk::ExceptionObject& e) {
+    throw RunError(fmt::format("cannot write '{}': {}", path, reason(e)));
+  }
+}
 
 template <typename T, typename In>
 void write_as(const std::string& path, const Grid& grid, const std::vector<In>& values, bool compress) {
@@ -66,17 +103,38 @@ void write_as(const std::string& path, const Grid& grid, const std::vector<In>& 
   image->SetDirection(direction);
   image->Allocate();
   std::transform(values.begin(), values.end(), image->GetBufferPointer(), [](In v) { return static_cast<T>(v); });
-  itk::ImageIOBase::Pointer io = image_io_for(path);
-  io->SetUseCompression(compress);
-  auto writer = itk::ImageFileWriter<Image>::New();
-  writer->SetImageIO(io);
-  writer->SetFileName(path);
-  writer->SetInput(image);
-  try {
-    writer->Update();
-  } catch (const itk::ExceptionObject& e) {
-    throw RunError(fmt::format("cannot write '{}': {}", path, reason(e)));
+  write_image<Image>(path, image, compress);
+}
+
+std::string component_name(itk::IOComponentEnum t) {
+  switch (t) {
+    case itk::IOComponentEnum::UCHAR: return "uint8";
+    case itk::IOComponentEnum::CHAR: return "int8";
+    case itk::IOComponentEnum::USHORT: return "uint16";
+    case itk::IOComponentEnum::SHORT: return "int16";
+    case itk::IOComponentEnum::UINT: return "uint32";
+    case itk::IOComponentEnum::INT: return "int32";
+    case itk::IOComponentEnum::ULONG:
+    case itk::IOComponentEnum::ULONGLONG: return "uint64";
+    case itk::IOComponentEnum::LONG:
+    case itk::IOComponentEnum::LONGLONG: return "int64";
+    case itk::IOComponentEnum::FLOAT: return "float32";
+    case itk::IOComponentEnum::DOUBLE: return "float64";
+    default: return "unknown";
   }
+}
+
+template <typename T>
+void write_slice_as(const std::string& path, std::int64_t nx, std::int64_t ny, const std::vector<float>& values) {
+  using Image = itk::Image<T, 2>;
+  auto image = Image::New();
+  typename Image::SizeType size;
+  size[0] = static_cast<itk::SizeValueType>(nx);
+  size[1] = static_cast<itk::SizeValueType>(ny);
+  image->SetRegions(size);
+  image->Allocate();
+  std::transform(values.begin(), values.end(), image->GetBufferPointer(), [](float v) { return static_cast<T>(v); });
+  write_image<Image>(path, image, false);
 }
 
 }  // namespace
@@ -84,6 +142,7 @@ void write_as(const std::string& path, const Grid& grid, const std::vector<In>& 
 std::string format_for(const std::string& path) {
   const std::string ext = lower_extension(path);
   if (ext == ".tif" || ext == ".tiff") return "TIFF";
+  if (ext == ".png") return "PNG";
   if (ext == ".nrrd" || ext == ".nhdr") return "NRRD";
   if (ext == ".mha" || ext == ".mhd") return "MetaImage";
   return "";
@@ -105,6 +164,7 @@ Header read_header(const std::string& path) {
   }
   h.dimensions = io->GetNumberOfDimensions();
   h.components = io->GetNumberOfComponents();
+  h.component_type = component_name(io->GetComponentType());
   for (unsigned a = 0; a < h.dimensions; ++a) h.extent.push_back(static_cast<std::int64_t>(io->GetDimensions(a)));
   if (h.dimensions == 3) {
     for (unsigned a = 0; a < 3; ++a) {
@@ -139,6 +199,19 @@ void write_values(const std::string& path, const Grid& grid, const std::vector<f
     case Stored::UInt16: write_as<std::uint16_t>(path, grid, values, compress); break;
     case Stored::UInt32: write_as<std::uint32_t>(path, grid, values, compress); break;
     case Stored::Float32: write_as<float>(path, grid, values, compress); break;
+  }
+}
+
+void write_slice(const std::string& path, std::int64_t nx, std::int64_t ny, const std::vector<float>& values,
+                 Stored stored) {
+  if (format_for(path) == "PNG" && (stored == Stored::Float32 || stored == Stored::UInt32)) {
+    input_error("'{}': PNG holds 8- and 16-bit grey levels only: write float slices as TIFF", path);
+  }
+  switch (stored) {
+    case Stored::UInt8: write_slice_as<std::uint8_t>(path, nx, ny, values); break;
+    case Stored::UInt16: write_slice_as<std::uint16_t>(path, nx, ny, values); break;
+    case Stored::UInt32: write_slice_as<std::uint32_t>(path, nx, ny, values); break;
+    case Stored::Float32: write_slice_as<float>(path, nx, ny, values); break;
   }
 }
 

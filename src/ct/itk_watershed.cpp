@@ -51,6 +51,26 @@ void watch(itk::Object* filter, const ProgressFn& progress, double from, double 
   });
 }
 
+// Distance inside the solid (voxels), shifted so that every solid voxel is >= 1 and pores are 0.
+FloatImage::Pointer height_map(const std::vector<std::uint8_t>& mask, const std::array<std::int64_t, 3>& size,
+                               const ProgressFn& progress) {
+  auto m = make_image<MaskImage>(size);
+  std::copy(mask.begin(), mask.end(), m->GetBufferPointer());
+  auto dist = itk::SignedMaurerDistanceMapImageFilter<MaskImage, FloatImage>::New();
+  dist->SetInput(m);
+  dist->SetBackgroundValue(0);
+  dist->SetInsideIsPositive(true);
+  dist->SetSquaredDistance(false);
+  dist->SetUseImageSpacing(false);
+  watch(dist, progress, 0.0, 0.25);
+  dist->Update();
+  FloatImage::Pointer height = dist->GetOutput();
+  height->DisconnectPipeline();
+  float* d = height->GetBufferPointer();
+  for (std::size_t i = 0; i < mask.size(); ++i) d[i] = mask[i] ? std::max(d[i], 0.0f) + 1.0f : 0.0f;
+  return height;
+}
+
 // Labels 1..count on the regional maxima of the h-maxima reconstruction of
 // `height` (one per hill rising more than h above its saddle), 0 elsewhere.
 struct Markers {
@@ -125,24 +145,7 @@ Watershed distance_watershed(const std::vector<std::uint8_t>& mask, const std::a
                              const ProgressFn& progress) {
   const std::size_t n = mask.size();
   try {
-    // Distance inside the solid (voxels), shifted so that every solid voxel is >= 1 and pores are 0.
-    FloatImage::Pointer height;
-    {
-      auto m = make_image<MaskImage>(size);
-      std::copy(mask.begin(), mask.end(), m->GetBufferPointer());
-      auto dist = itk::SignedMaurerDistanceMapImageFilter<MaskImage, FloatImage>::New();
-      dist->SetInput(m);
-      dist->SetBackgroundValue(0);
-      dist->SetInsideIsPositive(true);
-      dist->SetSquaredDistance(false);
-      dist->SetUseImageSpacing(false);
-      watch(dist, progress, 0.0, 0.25);
-      dist->Update();
-      height = dist->GetOutput();
-      height->DisconnectPipeline();
-      float* d = height->GetBufferPointer();
-      for (std::size_t i = 0; i < n; ++i) d[i] = mask[i] ? std::max(d[i], 0.0f) + 1.0f : 0.0f;
-    }
+    FloatImage::Pointer height = height_map(mask, size, progress);
 
     // h = 0: from the grains' size. The components are labelled again below,
     // after the markers: kept alive through h-maxima instead, their image
@@ -194,6 +197,19 @@ Watershed distance_watershed(const std::vector<std::uint8_t>& mask, const std::a
     throw RunError(fmt::format("the watershed failed inside ITK: {}", e.GetDescription()));
   } catch (const std::bad_alloc&) {
     throw RunError("out of memory in the watershed: crop the volume or use a machine with more memory");
+  }
+}
+
+Hills distance_hills(const std::vector<std::uint8_t>& mask, const std::array<std::int64_t, 3>& size, double h) {
+  try {
+    const FloatImage::Pointer height = height_map(mask, size, nullptr);
+    Hills hills;
+    const float* d = height->GetBufferPointer();
+    hills.radius = std::max(0.0f, *std::max_element(d, d + mask.size()) - 1.0f);
+    if (h > 0) hills.count = std::max<int>(1, static_cast<int>(markers_at(height, h, nullptr, 0, 0).count));
+    return hills;
+  } catch (const itk::ExceptionObject& e) {
+    throw RunError(fmt::format("the distance map of a grain failed inside ITK: {}", e.GetDescription()));
   }
 }
 

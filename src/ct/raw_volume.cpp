@@ -80,21 +80,20 @@ std::string pack(const GreyVolume& volume) {
 
 }  // namespace
 
-std::vector<float> read_raw_values(const fs::path& path, const RawLayout& layout) {
-  check_raw_file(path, layout);
+void read_raw_slice(const fs::path& path, const RawLayout& layout, std::int64_t z, std::vector<float>& values) {
   std::ifstream in(path, std::ios::binary);
-  const std::size_t n = static_cast<std::size_t>(layout.size[0] * layout.size[1] * layout.size[2]);
+  const std::size_t n = static_cast<std::size_t>(layout.size[0] * layout.size[1]);
   std::vector<char> bytes(n * voxel_bytes(layout.type));
+  in.seekg(static_cast<std::streamoff>(z) * static_cast<std::streamoff>(bytes.size()));
   if (!in.read(bytes.data(), static_cast<std::streamsize>(bytes.size()))) {
-    input_error("cannot read raw image '{}' ({} bytes expected)", path.string(), bytes.size());
+    input_error("cannot read slice {} of raw image '{}' ({} bytes at offset {}): was it changed while read?", z,
+                path.string(), bytes.size(), z * static_cast<std::int64_t>(bytes.size()));
   }
-  std::vector<float> values;
   switch (layout.type) {
     case VoxelType::UInt8: convert<std::uint8_t>(bytes, values); break;
     case VoxelType::UInt16: convert<std::uint16_t>(bytes, values); break;
     case VoxelType::Float32: convert<float>(bytes, values); break;
   }
-  return values;
 }
 
 void write_raw_volume(const GreyVolume& volume, const fs::path& path, VoxelType type) {

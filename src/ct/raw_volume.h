@@ -13,8 +13,9 @@ namespace grainlab::ct {
 // naming both sizes otherwise: empty, truncated or too long).
 void check_raw_file(const std::filesystem::path& path, const RawLayout& layout);
 
-// Reads a checked raw file's voxels as float.
-std::vector<float> read_raw_values(const std::filesystem::path& path, const RawLayout& layout);
+// Reads slice z (nx * ny voxels, x fastest) of a checked raw file as float.
+void read_raw_slice(const std::filesystem::path& path, const RawLayout& layout, std::int64_t z,
+                    std::vector<float>& values);
 
 // Writes the voxels as `type` (integers rounded and clamped), atomically.
 void write_raw_volume(const GreyVolume& volume, const std::filesystem::path& path, VoxelType type);

@@ -5,6 +5,7 @@
 #include "ct/itk_bridge.h"
 #include "ct/otsu.h"
 #include "ct/regions.h"
+#include "geometry/convex_hull.h"
 #include "geometry/mass_properties.h"
 #include "geometry/shape_metrics.h"
 
@@ -47,13 +48,19 @@ std::uint64_t available_memory_bytes() {
   return 0;
 }
 
-void check_memory(const Size3& size, const std::string& image_name) {
-  const std::uint64_t need = estimated_bytes(size), have = available_memory_bytes();
+void check_memory(const Size3& size, const std::string& image_name, std::uint64_t read_buffer_bytes) {
+  const std::uint64_t need = estimated_bytes(size) + read_buffer_bytes, have = available_memory_bytes();
   if (have > 0 && need > have) {
     input_error("'{}' is too large for this machine's memory: {} x {} x {} voxels need about {:.1f} GiB for the "
-                "segmentation ({} bytes per voxel), and {:.1f} GiB is available; crop the volume to the region of "
-                "interest, bin it 2x2x2 (8x less) or use a machine with more memory",
-                image_name, size[0], size[1], size[2], need / 1073741824.0, kBytesPerVoxel, have / 1073741824.0);
+                "segmentation ({} bytes per voxel{}), and {:.1f} GiB is available; crop the volume to the region of "
+                "interest (--crop x0,y0,z0,x1,y1,z1), bin it 2x2x2 (--bin 2: 8x less) or use a machine with more "
+                "memory{}",
+                image_name, size[0], size[1], size[2], need / 1073741824.0, kBytesPerVoxel,
+                read_buffer_bytes ? fmt::format(", plus {:.1f} GiB to read the whole file before cropping",
+                                                read_buffer_bytes / 1073741824.0)
+                                  : std::string(),
+                have / 1073741824.0,
+                read_buffer_bytes ? " (a folder of slices or a raw file is read a slice at a time)" : "");
   }
 }
 
@@ -106,6 +113,7 @@ void mesh_and_measure(LabelVolume& labels, const std::optional<GreyField>& grey,
       Quat q(principal_frame(gm.mesh).axes);
       if (q.w() < 0) q.coeffs() = -q.coeffs();
       g.orientation = q.normalized();
+      g.quality.convexity = convexity(gm.mesh);
       g.mesh = std::move(gm.mesh);
     } catch (...) {
       errors[i] = std::current_exception();
@@ -119,6 +127,13 @@ void mesh_and_measure(LabelVolume& labels, const std::optional<GreyField>& grey,
   for (const auto& e : errors) {
     if (e) std::rethrow_exception(e);
   }
+  progress.finish();
+
+  progress.start("quality table");
+  std::vector<GrainQuality> quality(result.grains.size());
+  for (std::size_t i = 0; i < quality.size(); ++i) quality[i].convexity = result.grains[i].quality.convexity;
+  result.quality_h = assess_grains(labels, regions, result.from_labels ? options.h : result.h, quality);
+  for (std::size_t i = 0; i < quality.size(); ++i) result.grains[i].quality = quality[i];
   progress.finish();
 }
 

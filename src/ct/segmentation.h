@@ -7,11 +7,14 @@
 //  4. tidy: regions smaller than min_voxels are dropped, the rest numbered 1..n;
 //  5. mesh: each grain's iso-surface, Taubin-smoothed, simplified to the face
 //     budget and checked;
-//  6. measure: volume, centroid and principal frame of each mesh.
+//  6. measure: volume, centroid and principal frame of each mesh, and the
+//     quality indicators (grain_quality.h): convexity, distance maxima,
+//     contacts with the neighbouring labels, likely merges and splits.
 // A label image (already segmented) starts at step 4.
 #pragma once
 
 #include "ct/grain_mesher.h"
+#include "ct/grain_quality.h"
 #include "ct/progress.h"
 #include "ct/volume.h"
 
@@ -46,6 +49,7 @@ struct SegmentedGrain {
   std::int64_t voxels = 0;          // voxels labelled with it
   int dropped_pieces = 0;           // surface pieces left out (see GrainMesh)
   bool within_budget = true;
+  GrainQuality quality;             // merge and split indicators (grain_quality.h)
 };
 
 struct Segmentation {
@@ -59,6 +63,7 @@ struct Segmentation {
   double solid_fraction = 0;        // of the voxels, after cleaning
   std::int64_t filled_voxels = 0;   // pore voxels made solid (step 2)
   int dropped_regions = 0;          // regions below min_voxels (step 4)
+  double quality_h = 0;             // h (voxels) of the distance maxima in the quality table
 };
 
 // Steps 1-6 on a grey-level scan. Throws InputError for an image with nothing
@@ -78,8 +83,9 @@ std::uint64_t estimated_bytes(const Size3& size);
 // Memory the system can give now (/proc/meminfo MemAvailable), or 0 when unknown.
 std::uint64_t available_memory_bytes();
 
-// Throws InputError when estimated_bytes(size) exceeds the available memory,
-// with both figures and what to do (crop, bin 2x2x2).
-void check_memory(const Size3& size, const std::string& image_name);
+// Throws InputError when estimated_bytes(size) plus `read_buffer_bytes` (held
+// while reading, ImageHeader::read_buffer_bytes) exceeds the available memory,
+// with both figures and what to do (--crop, --bin 2).
+void check_memory(const Size3& size, const std::string& image_name, std::uint64_t read_buffer_bytes = 0);
 
 }  // namespace grainlab::ct

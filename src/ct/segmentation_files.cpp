@@ -17,7 +17,7 @@ namespace {
 
 bool is_our_file(const fs::path& p) {
   const std::string name = p.filename().string();
-  return name == "grains.csv" ||
+  return name == "grains.csv" || name == "grain_quality.csv" ||
          (name.rfind("grain_", 0) == 0 && (p.extension() == ".stl" || p.extension() == ".obj"));
 }
 
@@ -49,6 +49,17 @@ std::string grains_csv(const Segmentation& s, const std::string& mesh_format) {
   return csv;
 }
 
+std::string grain_quality_csv(const Segmentation& s) {
+  std::string csv = std::string(kGrainQualityCsvHeader) + "\n";
+  for (const SegmentedGrain& g : s.grains) {
+    const GrainQuality& q = g.quality;
+    csv += fmt::format("{},{},{:.9e},{:.9e},{:.6f},{},{},{:.9e},{:.6f},{},{}\n", g.id, g.voxels, g.volume,
+                       g.equivalent_diameter, q.convexity, q.distance_maxima, q.contacts, q.contact_area,
+                       q.largest_contact_ratio, q.likely_merge ? 1 : 0, q.likely_split ? 1 : 0);
+  }
+  return csv;
+}
+
 void write_segmentation(const Segmentation& s, const fs::path& out, bool force, const std::string& mesh_format) {
   if (mesh_format != "stl" && mesh_format != "obj") input_error("--format '{}': use stl or obj", mesh_format);
   check_output_folder(out, force);
@@ -72,6 +83,7 @@ void write_segmentation(const Segmentation& s, const fs::path& out, bool force, 
       }
     }
     write_file_atomically(staging / "grains.csv", grains_csv(s, mesh_format));
+    write_file_atomically(staging / "grain_quality.csv", grain_quality_csv(s));
 
     const fs::path final_dir = parent / name;
     if (!fs::exists(final_dir)) {
@@ -88,6 +100,7 @@ void write_segmentation(const Segmentation& s, const fs::path& out, bool force, 
       const std::string f = mesh_file_name(g.id, mesh_format);
       fs::rename(staging / f, final_dir / f);
     }
+    fs::rename(staging / "grain_quality.csv", final_dir / "grain_quality.csv");
     fs::rename(staging / "grains.csv", final_dir / "grains.csv");
     fs::remove_all(staging);
   } catch (const fs::filesystem_error& e) {

@@ -11,23 +11,8 @@ namespace grainlab::ct {
 namespace {
 
 namespace fs = std::filesystem;
-
-// The scan as stored in uint16 (what every file below holds).
-GreyVolume as_uint16(const GreyVolume& v) {
-  GreyVolume out = v;
-  for (float& x : out.values) x = to_voxel<std::uint16_t>(x);
-  return out;
-}
-
-void expect_same_grains(const Segmentation& a, const Segmentation& b, const std::string& what) {
-  ASSERT_EQ(a.grains.size(), b.grains.size()) << what;
-  EXPECT_EQ(a.threshold, b.threshold) << what;
-  for (std::size_t g = 0; g < a.grains.size(); ++g) {
-    EXPECT_NEAR(a.grains[g].volume / b.grains[g].volume, 1.0, 1e-9) << what;
-    EXPECT_LT((a.grains[g].centroid - b.grains[g].centroid).norm(), 1e-12) << what;
-    EXPECT_EQ(a.grains[g].mesh.faces.size(), b.grains[g].mesh.faces.size()) << what;
-  }
-}
+using testing::as_uint16;
+using testing::expect_same_grains;
 
 TEST(CtFormats, EachFormatRoundTripsAndSegmentsTheSame) {
   const SyntheticScene& scene = testing::small_scene();
@@ -44,10 +29,10 @@ TEST(CtFormats, EachFormatRoundTripsAndSegmentsTheSame) {
     ImageSource source;
   };
   const std::vector<Case> cases = {
-      {"scan.tif", {dir / "scan.tif", std::nullopt, voxel}},  // TIFF holds no voxel size
-      {"scan.nrrd", {dir / "scan.nrrd", std::nullopt, std::nullopt}},
-      {"scan.mha", {dir / "scan.mha", std::nullopt, std::nullopt}},
-      {"scan.raw", {dir / "scan.raw", layout, voxel}},
+      {"scan.tif", {dir / "scan.tif", std::nullopt, voxel, {}}},  // TIFF holds no voxel size
+      {"scan.nrrd", {dir / "scan.nrrd", std::nullopt, std::nullopt, {}}},
+      {"scan.mha", {dir / "scan.mha", std::nullopt, std::nullopt, {}}},
+      {"scan.raw", {dir / "scan.raw", layout, voxel, {}}},
   };
   for (const Case& c : cases) {
     write_grey_volume(scene.volume, c.source.path, VoxelType::UInt16);
@@ -75,7 +60,7 @@ TEST(CtFormats, LabelImagesRoundTrip) {
   const fs::path dir = testing::fresh_folder("labels");
   for (const char* name : {"labels.nrrd", "labels.mha"}) {
     write_label_volume(labels, dir / name);
-    const LabelVolume back = read_label_volume({dir / name, std::nullopt, std::nullopt});
+    const LabelVolume back = read_label_volume({dir / name, std::nullopt, std::nullopt, {}});
     EXPECT_EQ(back.values, labels.values) << name;
     EXPECT_LT((back.spacing - labels.spacing).norm(), 1e-15) << name;
     EXPECT_LT((back.origin - labels.origin).norm(), 1e-15) << name;
@@ -90,8 +75,8 @@ TEST(CtFormats, VoxelSizeOptionWinsOverTheFile) {
   v.spacing = Vec3::Constant(10e-6);
   v.allocate(1.0f);
   write_grey_volume(v, dir / "v.nrrd", VoxelType::Float32);
-  EXPECT_NEAR(read_image_header({dir / "v.nrrd", std::nullopt, std::nullopt}).spacing.x(), 10e-6, 1e-18);
-  const ImageHeader h = read_image_header({dir / "v.nrrd", std::nullopt, 7e-6});
+  EXPECT_NEAR(read_image_header({dir / "v.nrrd", std::nullopt, std::nullopt, {}}).spacing.x(), 10e-6, 1e-18);
+  const ImageHeader h = read_image_header({dir / "v.nrrd", std::nullopt, 7e-6, {}});
   EXPECT_EQ(h.spacing, Vec3::Constant(7e-6));
   EXPECT_EQ(h.spacing_source, "--voxel-size");
   fs::remove_all(dir);

@@ -1,0 +1,167 @@
+#include "ct/nrrd_header.h"
+
+#include "core/error.h"
+#include "ct/declared_data.h"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <fstream>
+#include <vector>
+
+namespace grainlab::ct {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string lower(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+std::string trim(const std::string& s) {
+  const auto a = s.find_first_not_of(" \t\r");
+  if (a == std::string::npos) return "";
+  return s.substr(a, s.find_last_not_of(" \t\r") - a + 1);
+}
+
+// "m" "mm" "" -> {m, mm, ""}; unquoted words are taken as they are.
+std::vector<std::string> quoted_list(const std::string& value) {
+  std::vector<std::string> out;
+  std::size_t i = 0;
+  while (i < value.size()) {
+    if (std::isspace(static_cast<unsigned char>(value[i]))) {
+      ++i;
+    } else if (value[i] == '"') {
+      const auto end = value.find('"', i + 1);
+      out.push_back(value.substr(i + 1, (end == std::string::npos ? value.size() : end) - i - 1));
+      i = end == std::string::npos ? value.size() : end + 1;
+    } else {
+      const auto end = value.find_first_of(" \t", i);
+      out.push_back(value.substr(i, (end == std::string::npos ? value.size() : end) - i));
+      i = end == std::string::npos ? value.size() : end;
+    }
+  }
+  return out;
+}
+
+// Bytes per value of an NRRD type name (teem's spellings), 0 when unknown or "block".
+int type_bytes(const std::string& type) {
+  std::string t = lower(type);
+  for (const char* prefix : {"signed ", "unsigned "}) {
+    if (t.rfind(prefix, 0) == 0) t = t.substr(std::string(prefix).size());
+  }
+  if (t.size() > 2 && t.compare(t.size() - 2, 2, "_t") == 0) t.resize(t.size() - 2);
+  if (!t.empty() && t[0] == 'u' && t != "uchar" && t != "ushort" && t != "uint" && t != "ulonglong") {
+    t = t.substr(1);  // uint8 -> int8
+  }
+  static const std::map<std::string, int> bytes = {
+      {"char", 1},      {"uchar", 1},    {"int8", 1},      {"short", 2},     {"short int", 2}, {"ushort", 2},
+      {"int16", 2},     {"int", 4},      {"uint", 4},      {"int32", 4},     {"long long", 8}, {"long long int", 8},
+      {"longlong", 8},  {"ulonglong", 8}, {"int64", 8},    {"float", 4},     {"double", 8}};
+  const auto it = bytes.find(t);
+  return it == bytes.end() ? 0 : it->second;
+}
+
+std::string field(const NrrdHeader& h, const std::string& name) {
+  const auto it = h.fields.find(name);
+  return it == h.fields.end() ? "" : it->second;
+}
+
+}  // namespace
+
+double metres_per_unit(const std::string& unit) {
+  const std::string u = lower(trim(unit));
+  if (u.empty() || u == "???" || u == "none") return 0;
+  static const std::map<std::string, double> units = {
+      {"m", 1},          {"meter", 1},          {"meters", 1},          {"metre", 1},          {"metres", 1},
+      {"cm", 1e-2},      {"centimeter", 1e-2},  {"centimeters", 1e-2},  {"centimetre", 1e-2},  {"centimetres", 1e-2},
+      {"mm", 1e-3},      {"millimeter", 1e-3},  {"millimeters", 1e-3},  {"millimetre", 1e-3},  {"millimetres", 1e-3},
+      {"um", 1e-6},      {"\xc2\xb5m", 1e-6},   {"\xce\xbcm", 1e-6},    {"micron", 1e-6},      {"microns", 1e-6},
+      {"micrometer", 1e-6}, {"micrometers", 1e-6}, {"micrometre", 1e-6}, {"micrometres", 1e-6},
+      {"nm", 1e-9},      {"nanometer", 1e-9},   {"nanometers", 1e-9},   {"nanometre", 1e-9},   {"nanometres", 1e-9}};
+  const auto it = units.find(u);
+  return it == units.end() ? -1 : it->second;
+}
+
+NrrdHeader read_nrrd_header(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  if (!in || !std::getline(in, line) || line.rfind("NRRD000", 0) != 0) {
+    input_error("'{}' is not an NRRD file: it does not start with the NRRD magic line (\"NRRD0004\"); check the "
+                "file, or its extension",
+                path.string());
+  }
+  NrrdHeader h;
+  h.header_bytes = line.size() + 1;
+  while (std::getline(in, line)) {
+    h.header_bytes += line.size() + 1;
+    if (trim(line).empty()) break;  // the blank line before attached data
+    if (line[0] == '#' || line.find(":=") != std::string::npos) continue;  // comments, key/value pairs
+    const auto colon = line.find(": ");
+    if (colon == std::string::npos) continue;
+    std::string name;
+    for (char c : lower(line.substr(0, colon))) {
+      if (c != ' ') name += c;
+    }
+    h.fields[name] = trim(line.substr(colon + 2));
+  }
+  return h;
+}
+
+NrrdUnits nrrd_units(const NrrdHeader& h, const fs::path& path) {
+  // "space units" goes with "space directions"; per-axis "units" with "spacings".
+  const bool space = h.fields.count("spacedirections") > 0;
+  const std::string units_field = space ? "space units" : "units";
+  const std::string spacing_field = space ? "space directions" : "spacings";
+  const std::string value = field(h, space ? "spaceunits" : "units");
+  NrrdUnits u;
+  const std::vector<std::string> names = quoted_list(value);
+  std::array<double, 3> factor{0, 0, 0};
+  for (std::size_t a = 0; a < std::min<std::size_t>(3, names.size()); ++a) {
+    factor[a] = metres_per_unit(names[a]);
+    if (factor[a] < 0) {
+      input_error("'{}': NRRD '{}' \"{}\" is not a length unit grainlab knows (m, cm, mm, um, \xc2\xb5m, microns, "
+                  "nm): fix the header, or give the voxel size with --voxel-size in metres (e.g. --voxel-size 25e-6)",
+                  path.string(), units_field, names[a]);
+    }
+  }
+  const bool given = factor[0] > 0 || factor[1] > 0 || factor[2] > 0;
+  if (!given) {
+    u.source = fmt::format("header field '{}' read as mm (the file has no '{}')", spacing_field, units_field);
+    return u;
+  }
+  if (!(factor[0] > 0 && factor[1] > 0 && factor[2] > 0)) {
+    input_error("'{}': NRRD '{}: {}' gives a unit for some axes and not others: give all three, or the voxel size "
+                "with --voxel-size in metres",
+                path.string(), units_field, value);
+  }
+  u.metres_per_unit = Vec3(factor[0], factor[1], factor[2]);
+  u.named = true;
+  u.source = fmt::format("header field '{}' in the file's '{}: {}'", spacing_field, units_field, value);
+  return u;
+}
+
+void check_nrrd_data_size(const NrrdHeader& h, const fs::path& path) {
+  if (lower(field(h, "encoding")) != "raw") return;
+  const int bytes = type_bytes(field(h, "type"));
+  if (bytes == 0) return;  // ITK names an unknown type
+  const std::uint64_t need = declared_bytes(field(h, "sizes"), bytes);
+  if (need == 0) return;  // ITK names the problem
+  const std::int64_t byte_skip = field(h, "byteskip").empty() ? 0 : std::atoll(field(h, "byteskip").c_str());
+  const std::int64_t line_skip = field(h, "lineskip").empty() ? 0 : std::atoll(field(h, "lineskip").c_str());
+  if (line_skip != 0) return;  // data after counted lines: left to ITK
+  DeclaredData d{path, "NRRD", fmt::format("'sizes: {}' of 'type: {}'", field(h, "sizes"), field(h, "type")), need,
+                 path, h.header_bytes, byte_skip == -1, "'sizes' and 'type'"};
+  const std::string data_file = field(h, "datafile");
+  if (!data_file.empty()) {
+    if (data_file.rfind("LIST", 0) == 0 || data_file.find('%') != std::string::npos) return;  // several files
+    d.data = fs::path(data_file).is_absolute() ? fs::path(data_file) : path.parent_path() / data_file;
+    d.offset = 0;
+  }
+  if (byte_skip > 0) d.offset += static_cast<std::uint64_t>(byte_skip);
+  check_declared_data(d);
+}
+
+}  // namespace grainlab::ct
