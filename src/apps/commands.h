@@ -16,6 +16,10 @@ Command add_grains_command(CLI::App& app);
 // `grainlab grains index` (registered by add_grains_command on its `grains` app).
 Command add_grains_index_command(CLI::App& grains);
 
+// `grainlab grains import|fit-sh|spectrum` (registered by add_grains_command on
+// its `grains` app): grains described by spherical harmonics.
+Command add_grains_sh_commands(CLI::App& grains);
+
 // `grainlab run`: a direct shear test from a config file.
 Command add_run_command(CLI::App& app);
 
