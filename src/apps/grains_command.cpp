@@ -39,8 +39,8 @@ struct GenerateOptions {
 struct StatsOptions {
   std::vector<std::string> inputs;
   std::string representation = "auto";
-  int faces = 2000;    // SH files: triangles of the mesh
-  double unit = 1e-3;  // SH files: metres per unit
+  int faces = 2000;  // SH files: triangles of the mesh
+  ShOptions sh;      // SH files: unit, degrees kept
 };
 
 // Mean, minimum and maximum of one column.
@@ -130,7 +130,7 @@ int run_stats(const StatsOptions& o) {
     std::vector<ShapeMetrics> metrics;
     int as_pieces = 0;
     for (const fs::path& file : sets[set]) {
-      const TriMesh mesh = load_grain_file(file, o.faces, ShScale{o.unit, 0});
+      const TriMesh mesh = load_grain_file(file, o.faces, o.sh);
       const ShapeMetrics s = shape_metrics(mesh);
       // What a run would collide (grains.representation): the hull, or convex pieces.
       std::size_t pieces = 1;
@@ -229,13 +229,7 @@ Command add_grains_command(CLI::App& app) {
                     "collision shape to report: auto (pieces below convexity 0.98), hull or concave")
       ->check(CLI::IsMember({"auto", "hull", "concave"}))
       ->capture_default_str();
-  stats->add_option("--faces", s->faces, "triangles of the mesh of each SH file (.dat)")
-      ->check(CLI::Range(8, 1000000))
-      ->capture_default_str();
-  stats->add_option("--unit", s->unit,
-                    "metres per unit of the SH files (.dat): 1e-3 for millimetres, 1e-6 for micrometres")
-      ->check(CLI::PositiveNumber)
-      ->capture_default_str();
+  add_sh_file_options(*stats, s->faces, s->sh);
 
   const Command index = add_grains_index_command(*grains);
   const Command sh = add_grains_sh_commands(*grains);

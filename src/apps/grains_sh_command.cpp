@@ -31,8 +31,7 @@ struct ImportOptions {
   std::vector<std::string> inputs;
   std::string out;
   int faces = 2000;
-  double unit = 1e-3;
-  double d_eq = 0;
+  ShOptions sh;
 };
 
 struct FitOptions {
@@ -46,7 +45,7 @@ struct SpectrumOptions {
   std::vector<std::string> inputs;
   std::string out;
   int faces = 2000;
-  double unit = 1e-3;
+  ShOptions sh;
   int degree = 30;
 };
 
@@ -79,7 +78,7 @@ int run_import(const ImportOptions& o) {
   // Read and mesh every file first: a bad one stops the command before anything is written.
   Stopwatch clock;
   std::vector<TriMesh> meshes;
-  for (const fs::path& f : files) meshes.push_back(load_sh_grain(f, o.faces, ShScale{o.unit, o.d_eq}));
+  for (const fs::path& f : files) meshes.push_back(load_sh_grain(f, o.faces, o.sh));
   const double seconds = clock.seconds();
   std::error_code ec;
   fs::create_directories(o.out, ec);
@@ -142,8 +141,9 @@ int run_spectrum(const SpectrumOptions& o) {
   int degree = 1000;
   for (const fs::path& file : files) {
     const bool sh = is_sh_file(file);
-    const TriMesh mesh = load_grain_file(file, o.faces, ShScale{o.unit, 0});
-    const ShCoefficients coefficients = sh ? read_sh_file(file) : fit_sh(mesh, o.degree, file.string()).coefficients;
+    const TriMesh mesh = load_grain_file(file, o.faces, o.sh);
+    const ShCoefficients coefficients =
+        sh ? truncated(read_sh_file(file), o.sh.max_degree) : fit_sh(mesh, o.degree, file.string()).coefficients;
     amplitudes.push_back(sh_degree_amplitudes(coefficients));
     degree = std::min(degree, coefficients.degree);
     const ShapeMetrics s = shape_metrics(mesh);
@@ -168,7 +168,7 @@ int run_spectrum(const SpectrumOptions& o) {
       "[spectrum]\n"
       "# A_n / A_0, n = 0..degree: A_n = sqrt(sum_m |a_nm|^2), the rotation-invariant amplitude of degree n\n"
       "mean = {}\nstd = {}\n\n[shape]\n",
-      files.size(), o.faces, files.size(), degree, o.unit, toml_array(mean), toml_array(spread));
+      files.size(), o.faces, files.size(), degree, o.sh.unit, toml_array(mean), toml_array(spread));
   text += toml_stats("equivalent_diameter_m", d, "(6 V / pi)^(1/3), m");
   text += toml_stats("roundness", r, "Wadell, mean of the three principal projections");
   text += toml_stats("sphericity", sph, "area of the equal-volume sphere / surface area");
@@ -186,11 +186,22 @@ int run_spectrum(const SpectrumOptions& o) {
   return 0;
 }
 
-const char* kUnitHelp =
-    "metres per unit of the SH files (they do not say): 1e-3 for millimetres (VCCTL's LS-coarse and "
-    "MA113AB-2-fine sets), 1e-6 for micrometres";
-
 }  // namespace
+
+void add_sh_file_options(CLI::App& cmd, int& faces, ShOptions& sh) {
+  cmd.add_option("--faces", faces, "triangles of the mesh of each SH file (.dat)")
+      ->check(CLI::Range(8, 1000000))
+      ->capture_default_str();
+  cmd.add_option("--unit", sh.unit,
+                 "metres per unit of the SH files (they do not say): 1e-3 for millimetres (VCCTL's LS-coarse and "
+                 "MA113AB-2-fine sets), 1e-6 for micrometres")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  cmd.add_option("--max-degree", sh.max_degree,
+                 "keep only the degrees n <= this of the SH files (a smoother grain); -1: all of them")
+      ->check(CLI::Range(-1, 200))
+      ->capture_default_str();
+}
 
 Command add_grains_sh_commands(CLI::App& grains) {
   auto im = std::make_shared<ImportOptions>();
@@ -207,9 +218,8 @@ Command add_grains_sh_commands(CLI::App& grains) {
       "direction; then nothing is written. A run reads .dat files in its [grains] folder the same way.");
   import->add_option("files", im->inputs, "SH files (.dat), or folders of them")->required();
   import->add_option("--out", im->out, "output folder (created if missing); one <name>.stl per file")->required();
-  import->add_option("--faces", im->faces, "triangles per grain")->check(CLI::Range(8, 1000000))->capture_default_str();
-  import->add_option("--unit", im->unit, kUnitHelp)->check(CLI::PositiveNumber)->capture_default_str();
-  import->add_option("--d-eq", im->d_eq, "scale every grain to this volume-equivalent diameter (m) instead of --unit")
+  add_sh_file_options(*import, im->faces, im->sh);
+  import->add_option("--d-eq", im->sh.d_eq, "scale every grain to this volume-equivalent diameter (m) instead of --unit")
       ->check(CLI::PositiveNumber);
 
   auto fo = std::make_shared<FitOptions>();
@@ -239,10 +249,7 @@ Command add_grains_sh_commands(CLI::App& grains) {
       "to --degree (as fit-sh) for the spectrum and measured as they are.");
   spectrum->add_option("files", so->inputs, "grain files (.dat, .stl, .obj, .ply), or folders of them")->required();
   spectrum->add_option("--out", so->out, "TOML file to write, e.g. SAND.toml")->required();
-  spectrum->add_option("--faces", so->faces, "triangles per SH grain for the metrics")
-      ->check(CLI::Range(8, 1000000))
-      ->capture_default_str();
-  spectrum->add_option("--unit", so->unit, kUnitHelp)->check(CLI::PositiveNumber)->capture_default_str();
+  add_sh_file_options(*spectrum, so->faces, so->sh);
   spectrum->add_option("--degree", so->degree, "degree of the fit of mesh files")
       ->check(CLI::Range(0, 100))
       ->capture_default_str();

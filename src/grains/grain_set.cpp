@@ -58,8 +58,8 @@ bool is_grain_file(const std::filesystem::path& path) {
   return ext == ".stl" || ext == ".obj" || ext == ".ply" || is_sh_file(path);
 }
 
-TriMesh load_grain_file(const std::filesystem::path& path, int sh_faces, const ShScale& sh_scale) {
-  return is_sh_file(path) ? load_sh_grain(path, sh_faces, sh_scale) : load_mesh(path);
+TriMesh load_grain_file(const std::filesystem::path& path, int sh_faces, const ShOptions& sh_options) {
+  return is_sh_file(path) ? load_sh_grain(path, sh_faces, sh_options) : load_mesh(path);
 }
 
 double size_of(const TriMesh& mesh) { return principal_frame(mesh).extents[1]; }
@@ -117,7 +117,7 @@ GrainSet import_grain_set(const std::filesystem::path& folder, int face_budget, 
   std::vector<double> measured;
   for (const auto& file : files) {
     // An SH grain is meshed at the budget directly (its size is set below, so its unit does not matter).
-    SimplifyResult s = is_sh_file(file) ? SimplifyResult{load_sh_grain(file, face_budget, ShScale{1.0, 0})}
+    SimplifyResult s = is_sh_file(file) ? SimplifyResult{load_sh_grain(file, face_budget, ShOptions{1.0, 0})}
                                         : simplify_mesh(load_mesh(file), face_budget);
     if (!s.within_budget) {
       set.notes.push_back(fmt::format("{}: {} faces could not keep the volume within 1 % and the mesh closed; "

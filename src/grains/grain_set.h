@@ -50,9 +50,9 @@ GrainSet generate_grain_set(const GeneratorSpec& spec, int count, std::uint64_t 
 bool is_grain_file(const std::filesystem::path& path);
 
 // One grain file as a closed mesh: an SH file meshed at `sh_faces` faces and
-// brought to metres by `sh_scale` (load_sh_grain), or a mesh file read,
+// brought to metres by `sh_options` (load_sh_grain), or a mesh file read,
 // checked and repaired as it is (load_mesh; its coordinates taken as metres).
-TriMesh load_grain_file(const std::filesystem::path& path, int sh_faces, const ShScale& sh_scale);
+TriMesh load_grain_file(const std::filesystem::path& path, int sh_faces, const ShOptions& sh_options);
 
 // Every grain file in `folder` (is_grain_file; not recursive), sorted by name:
 // a mesh read, checked and repaired (load_mesh), simplified to `face_budget`

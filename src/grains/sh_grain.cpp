@@ -199,8 +199,15 @@ TriMesh sh_mesh(const ShCoefficients& c, int faces, const std::string& name) {
   return m;
 }
 
-TriMesh load_sh_grain(const std::filesystem::path& path, int faces, const ShScale& scale) {
-  TriMesh m = sh_mesh(read_sh_file(path), faces, path.string());
+ShCoefficients truncated(const ShCoefficients& c, int degree) {
+  if (degree < 0 || degree >= c.degree) return c;
+  ShCoefficients out(degree);
+  std::copy(c.a.begin(), c.a.begin() + sh_count(degree), out.a.begin());
+  return out;
+}
+
+TriMesh load_sh_grain(const std::filesystem::path& path, int faces, const ShOptions& scale) {
+  TriMesh m = sh_mesh(truncated(read_sh_file(path), scale.max_degree), faces, path.string());
   double s = scale.unit;
   if (scale.d_eq > 0) {
     const double volume = mass_properties(m).volume;

@@ -37,16 +37,21 @@ void write_sh_file(const ShCoefficients& c, const std::filesystem::path& path);
 // fold over itself (proof in sh_grain.cpp). faces >= 8.
 TriMesh sh_mesh(const ShCoefficients& c, int faces, const std::string& name);
 
-// How to bring an SH grain to metres: multiply by `unit` (metres per unit of
-// the file; 1e-3 for millimetres), or, when d_eq > 0, scale it to that
-// volume-equivalent diameter (m) instead.
-struct ShScale {
+// How to mesh an SH grain: bring it to metres by multiplying by `unit`
+// (metres per unit of the file; 1e-3 for millimetres), or, when d_eq > 0, by
+// scaling it to that volume-equivalent diameter (m) instead; with
+// max_degree >= 0, only the degrees n <= max_degree (a smoother grain).
+struct ShOptions {
   double unit = 1e-3;
   double d_eq = 0;
+  int max_degree = -1;
 };
 
-// read_sh_file, sh_mesh and the scale: the grain in metres, about the file's origin.
-TriMesh load_sh_grain(const std::filesystem::path& path, int faces, const ShScale& scale);
+// The first degrees of `c`, n <= degree (all of them if degree >= c.degree).
+ShCoefficients truncated(const ShCoefficients& c, int degree);
+
+// read_sh_file, truncated, sh_mesh and the scale: the grain in metres, about the file's origin.
+TriMesh load_sh_grain(const std::filesystem::path& path, int faces, const ShOptions& scale);
 
 // True for a path with the SH extension (any case).
 bool is_sh_file(const std::filesystem::path& path);

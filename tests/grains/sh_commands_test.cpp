@@ -117,6 +117,13 @@ TEST(ShCommands, SpectrumOfASetWritesTomlWithAmplitudesAndShapeStatistics) {
     EXPECT_CONTAINS(toml, key);
   }
   EXPECT_CONTAINS(slurp(dir / "log.txt"), "A_n/A_0 at n = 2, 5, 10, 20: 0.0500, -, -, -");
+  // Degrees above --max-degree are left out, of the spectrum and of the meshes.
+  ASSERT_EQ(grainlab(dir, "grains spectrum " + (dir / "egg.dat").string() + " --max-degree 1 --out " +
+                              (dir / "smooth.toml").string()),
+            0)
+      << slurp(dir / "log.txt");
+  EXPECT_CONTAINS(slurp(dir / "smooth.toml"), "degree = 1\n");
+  EXPECT_CONTAINS(slurp(dir / "smooth.toml"), "sphericity = { mean = 0.99");  // the egg's a_20 is gone: a ball
 }
 
 TEST(ShCommands, AGrainFolderOfShFilesIsAGrainSet) {

@@ -34,7 +34,7 @@ TEST(ShGrain, SphereOfOneCoefficientHasTheSpheresVolumeAndArea) {
   ShCoefficients c(0);
   c.at(0, 0) = std::sqrt(4 * kPi) * 1.5;  // r = a_00 Y_00 = 1.5
   write_sh_file(c, dir / "ball.dat");
-  const TriMesh m = load_sh_grain(dir / "ball.dat", 2000, ShScale{1e-3, 0});
+  const TriMesh m = load_sh_grain(dir / "ball.dat", 2000, ShOptions{1e-3, 0});
   EXPECT_EQ(m.faces.size(), 2000u);
   EXPECT_TRUE(check_mesh(m).ok()) << check_mesh(m).describe();
   const double r = 1.5e-3;
@@ -49,7 +49,7 @@ TEST(ShGrain, EllipsoidFromQuadratureHasTheEllipsoidsVolumeAndArea) {
   write_sh_file(test::ellipsoid_coefficients(a, b, c, 30), dir / "ellipsoid.dat");
   const ShCoefficients back = read_sh_file(dir / "ellipsoid.dat");
   EXPECT_EQ(back.degree, 30);
-  const TriMesh m = load_sh_grain(dir / "ellipsoid.dat", 2000, ShScale{1e-3, 0});
+  const TriMesh m = load_sh_grain(dir / "ellipsoid.dat", 2000, ShOptions{1e-3, 0});
   EXPECT_TRUE(check_mesh(m).ok());
   // Exact area (Legendre's form, a >= b >= c): 2 pi c^2 + 2 pi a b / sin(p) (E(p, k) sin^2 p + F(p, k) cos^2 p),
   // cos p = c / a, k^2 = a^2 (b^2 - c^2) / (b^2 (a^2 - c^2)).
@@ -88,10 +88,10 @@ TEST(ShGrain, RotatedCoefficientsGiveTheRotatedBody) {
 TEST(ShGrain, ScalesByAUnitOrToAnEquivalentDiameter) {
   test::TempDir dir;
   write_sh_file(test::ellipsoid_coefficients(2, 1.5, 1, 12), dir / "e.dat");
-  const TriMesh mm = load_sh_grain(dir / "e.dat", 500, ShScale{1e-3, 0});
-  const TriMesh um = load_sh_grain(dir / "e.dat", 500, ShScale{1e-6, 0});
+  const TriMesh mm = load_sh_grain(dir / "e.dat", 500, ShOptions{1e-3, 0});
+  const TriMesh um = load_sh_grain(dir / "e.dat", 500, ShOptions{1e-6, 0});
   EXPECT_NEAR(mass_properties(mm).volume / mass_properties(um).volume, 1e9, 1e-3);
-  const TriMesh d = load_sh_grain(dir / "e.dat", 500, ShScale{1e-3, 0.8e-3});
+  const TriMesh d = load_sh_grain(dir / "e.dat", 500, ShOptions{1e-3, 0.8e-3});
   EXPECT_NEAR(std::cbrt(6 * mass_properties(d).volume / kPi), 0.8e-3, 1e-12);
 }
 
@@ -116,7 +116,7 @@ std::string refusal(const std::vector<std::string>& lines, bool final_newline = 
     std::ofstream out(dir / "bad.dat");
     for (std::size_t i = 0; i < lines.size(); ++i) out << lines[i] << (i + 1 < lines.size() || final_newline ? "\n" : "");
   }
-  return test::input_error_of([&] { load_sh_grain(dir / "bad.dat", 200, ShScale{}); });
+  return test::input_error_of([&] { load_sh_grain(dir / "bad.dat", 200, ShOptions{}); });
 }
 
 TEST(ShGrain, BadFilesAreRefusedNamingFileAndLine) {
