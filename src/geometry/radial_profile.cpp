@@ -8,7 +8,8 @@
 // of the mesh's size, and what remains are the ray's crossings of the
 // surface. From a point inside a closed surface a ray crosses it an odd
 // number of times; one crossing along every direction is what star-shaped
-// means. Brute force: a 2000-face grain and 7,000 rays take about 30 ms.
+// means. Brute force: a 2000-face grain and the 7,381 rays of a degree-30
+// fit take about 1 s on one core.
 #include "geometry/radial_profile.h"
 
 #include "core/error.h"
