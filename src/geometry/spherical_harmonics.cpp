@@ -152,14 +152,47 @@ SphereQuadrature sphere_quadrature(int band) {
   gauss_legendre(band + 1, x, w);
   const int n_phi = 2 * band + 1;
   SphereQuadrature q;
+  q.n_phi = n_phi;
   for (std::size_t i = 0; i < x.size(); ++i) {
     const double theta = std::acos(x[i]);
+    q.thetas.push_back(theta);
     for (int j = 0; j < n_phi; ++j) {
       q.directions.push_back(direction_of(theta, 2 * std::numbers::pi * j / n_phi));
       q.weights.push_back(w[i] * 2 * std::numbers::pi / n_phi);
     }
   }
   return q;
+}
+
+std::vector<double> sh_radii(const ShCoefficients& c, const SphereQuadrature& q) {
+  std::vector<double> r;
+  r.reserve(q.directions.size());
+  std::vector<std::complex<double>> y, sum(static_cast<std::size_t>(c.degree + 1));
+  for (const double theta : q.thetas) {
+    sh_basis(c.degree, theta, 0.0, y);  // Y_nm at phi = 0: real, (-1)^m Pb_n^m
+    for (int m = 0; m <= c.degree; ++m) {
+      std::complex<double> plus = 0, minus = 0;
+      for (int n = m; n <= c.degree; ++n) {
+        const double q_nm = y[static_cast<std::size_t>(sh_index(n, m))].real();
+        plus += q_nm * c.at(n, m);
+        minus += q_nm * c.at(n, -m);
+      }
+      // a_nm Y_nm + a_{n,-m} (-1)^m conj(Y_nm) = q_nm (a_nm e^{i m phi} + (-1)^m a_{n,-m} e^{-i m phi}),
+      // whose real part is Re((a_nm + (-1)^m conj(a_{n,-m})) q_nm e^{i m phi}).
+      sum[m] = m == 0 ? plus : plus + (m % 2 ? -1.0 : 1.0) * std::conj(minus);
+    }
+    for (int j = 0; j < q.n_phi; ++j) {
+      const std::complex<double> step = std::polar(1.0, 2 * std::numbers::pi * j / q.n_phi);
+      std::complex<double> e = 1;
+      double value = 0;
+      for (int m = 0; m <= c.degree; ++m) {
+        value += (sum[m] * e).real();
+        e *= step;
+      }
+      r.push_back(value);
+    }
+  }
+  return r;
 }
 
 ShCoefficients sh_project(const SphereQuadrature& q, std::span<const double> values, int degree) {

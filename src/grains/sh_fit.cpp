@@ -27,9 +27,10 @@ ShFit fit_sh(const TriMesh& mesh, int degree, const std::string& name) {
   fit.centre = mp.centroid;
   fit.equivalent_diameter = std::cbrt(6 * mp.volume / std::numbers::pi);
   fit.directions = static_cast<int>(r.size());
+  const std::vector<double> fitted = sh_radii(fit.coefficients, q);
   double sum = 0;
   for (std::size_t i = 0; i < r.size(); ++i) {
-    const double e = r[i] - sh_radius(fit.coefficients, q.directions[i]);
+    const double e = r[i] - fitted[i];
     sum += q.weights[i] * e * e;
     fit.max_error = std::max(fit.max_error, std::abs(e));
   }

@@ -105,6 +105,15 @@ TEST(SphericalHarmonics, ProjectionRecoversABandLimitedFunctionExactly) {
   for (std::size_t i = 0; i < c.a.size(); ++i) EXPECT_NEAR(std::abs(back.a[i] - c.a[i]), 0, 1e-12) << i;
 }
 
+TEST(SphericalHarmonics, RadiiRowByRowEqualThePointwiseSum) {
+  ShCoefficients c = random_real(30, 9);
+  c.at(7, -3) += std::complex<double>(0.2, -0.1);  // break the symmetry: the real part of the sum all the same
+  const SphereQuadrature q = sphere_quadrature(60);
+  const std::vector<double> r = sh_radii(c, q);
+  ASSERT_EQ(r.size(), q.directions.size());
+  for (std::size_t i = 0; i < r.size(); i += 7) EXPECT_NEAR(r[i], sh_radius(c, q.directions[i]), 1e-12) << i;
+}
+
 TEST(SphericalHarmonics, DegreeAmplitudesDoNotChangeUnderRotation) {
   const ShCoefficients c = random_real(8, 5);
   const Mat3 rot = (Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()) * Eigen::AngleAxisd(2.1, Vec3::UnitZ()))
