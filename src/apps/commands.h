@@ -2,6 +2,8 @@
 // a callback that runs it (exit code), so main() stays a dispatcher.
 #pragma once
 
+#include "grains/sh_grain.h"
+
 #include <CLI/CLI.hpp>
 
 #include <functional>
@@ -15,6 +17,13 @@ Command add_grains_command(CLI::App& app);
 
 // `grainlab grains index` (registered by add_grains_command on its `grains` app).
 Command add_grains_index_command(CLI::App& grains);
+
+// `grainlab grains import|fit-sh|spectrum` (registered by add_grains_command on
+// its `grains` app): grains described by spherical harmonics.
+Command add_grains_sh_commands(CLI::App& grains);
+
+// The options of a command that meshes SH files: --faces, --unit, --max-degree.
+void add_sh_file_options(CLI::App& cmd, int& faces, ShOptions& sh);
 
 // `grainlab run`: a direct shear test from a config file.
 Command add_run_command(CLI::App& app);

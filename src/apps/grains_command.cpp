@@ -11,7 +11,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -40,6 +39,8 @@ struct GenerateOptions {
 struct StatsOptions {
   std::vector<std::string> inputs;
   std::string representation = "auto";
+  int faces = 2000;  // SH files: triangles of the mesh
+  ShOptions sh;      // SH files: unit, degrees kept
 };
 
 // Mean, minimum and maximum of one column.
@@ -98,16 +99,6 @@ int run_generate(const GenerateOptions& o) {
   return 0;
 }
 
-std::string lower(std::string s) {
-  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return s;
-}
-
-bool is_mesh_file(const fs::path& p) {
-  const std::string ext = lower(p.extension().string());
-  return ext == ".stl" || ext == ".obj" || ext == ".ply";
-}
-
 int run_stats(const StatsOptions& o) {
   // Sets: each folder argument, and the parent folder of each file argument.
   std::map<std::string, std::vector<fs::path>> sets;
@@ -121,10 +112,10 @@ int run_stats(const StatsOptions& o) {
     if (fs::is_directory(p)) {
       std::vector<fs::path> files;
       for (const auto& e : fs::directory_iterator(p)) {
-        if (e.is_regular_file() && is_mesh_file(e.path())) files.push_back(e.path());
+        if (e.is_regular_file() && is_grain_file(e.path())) files.push_back(e.path());
       }
       std::sort(files.begin(), files.end());
-      if (files.empty()) input_error("'{}' holds no .stl, .obj or .ply file", in);
+      if (files.empty()) input_error("'{}' holds no .stl, .obj, .ply or .dat (spherical-harmonic) file", in);
       for (const auto& f : files) add(in, f);
     } else if (fs::is_regular_file(p)) {
       add(p.parent_path().empty() ? "." : p.parent_path().string(), p);
@@ -139,7 +130,7 @@ int run_stats(const StatsOptions& o) {
     std::vector<ShapeMetrics> metrics;
     int as_pieces = 0;
     for (const fs::path& file : sets[set]) {
-      const TriMesh mesh = load_mesh(file);
+      const TriMesh mesh = load_grain_file(file, o.faces, o.sh);
       const ShapeMetrics s = shape_metrics(mesh);
       // What a run would collide (grains.representation): the hull, or convex pieces.
       std::size_t pieces = 1;
@@ -171,8 +162,9 @@ Command add_grains_command(CLI::App& app) {
   auto g = std::make_shared<GenerateOptions>();
   auto s = std::make_shared<StatsOptions>();
   auto* grains = app.add_subcommand(
-      "grains", "generate synthetic sand grains, measure grain meshes (size, sphericity, Wadell roundness), or measure a "
-      "grain set's own index void ratios (e_min, e_max)");
+      "grains", "generate synthetic sand grains, measure grain meshes (size, sphericity, Wadell roundness), measure a "
+      "grain set's own index void ratios (e_min, e_max), or import, fit and summarise grains described by "
+      "spherical harmonics");
   grains->require_subcommand(1);
 
   std::string presets = "angularity class, standing in for the paper's sands:";
@@ -221,7 +213,8 @@ Command add_grains_command(CLI::App& app) {
 
   auto* stats = grains->add_subcommand(
       "stats",
-      "measure grain meshes (STL, OBJ, PLY; coordinates in metres) and print a CSV table on standard output:\n"
+      "measure grain meshes (STL, OBJ, PLY; coordinates in metres) or spherical-harmonic grains (.dat, meshed\n"
+      "at --faces as `grains import` does, --unit metres per unit) and print a CSV table on standard output:\n"
       "one row per grain with volume_m3, surface_area_m2, equivalent_diameter_m (equal-volume sphere),\n"
       "long/intermediate/short_axis_m (extents along the principal axes of inertia), elongation (I/L),\n"
       "flatness (S/I), sphericity (area of the equal-volume sphere / surface area), convexity\n"
@@ -236,12 +229,15 @@ Command add_grains_command(CLI::App& app) {
                     "collision shape to report: auto (pieces below convexity 0.98), hull or concave")
       ->check(CLI::IsMember({"auto", "hull", "concave"}))
       ->capture_default_str();
+  add_sh_file_options(*stats, s->faces, s->sh);
 
   const Command index = add_grains_index_command(*grains);
-  return [gen, stats, g, s, index]() {
+  const Command sh = add_grains_sh_commands(*grains);
+  return [gen, stats, g, s, index, sh]() {
     if (*gen) return run_generate(*g);
     if (*stats) return run_stats(*s);
-    return index();
+    const int rc = sh();
+    return rc >= 0 ? rc : index();
   };
 }
 

@@ -150,7 +150,7 @@ Command add_grains_index_command(CLI::App& grains) {
                                          "run config (TOML); the options below override it");
   cmd->add_option("--preset", o->preset, "grain class: glass-beads | rounded | sub-angular | angular")
       ->check(CLI::IsMember({"glass-beads", "rounded", "sub-angular", "angular"}));
-  cmd->add_option("--folder", o->folder, "import the grain meshes (STL/OBJ/PLY, metres) of this folder instead");
+  cmd->add_option("--folder", o->folder, "import the grains of this folder instead (meshes: STL/OBJ/PLY; SH files: .dat)");
   cmd->add_option("--shapes", o->shapes, "distinct grain shapes (default: the config's, 24)")->check(CLI::PositiveNumber);
   cmd->add_option("--faces", o->faces, "faces per grain shape (default: the config's, 200)")->check(CLI::Range(100, 1000000));
   cmd->add_option("--d-min", o->d_min, "smallest sieve size, m (default 0.707e-3)")->check(CLI::PositiveNumber);

@@ -53,6 +53,15 @@ void validate(const SieveRange& s) {
   }
 }
 
+bool is_grain_file(const std::filesystem::path& path) {
+  const std::string ext = lower(path.extension().string());
+  return ext == ".stl" || ext == ".obj" || ext == ".ply" || is_sh_file(path);
+}
+
+TriMesh load_grain_file(const std::filesystem::path& path, int sh_faces, const ShOptions& sh_options) {
+  return is_sh_file(path) ? load_sh_grain(path, sh_faces, sh_options) : load_mesh(path);
+}
+
 double size_of(const TriMesh& mesh) { return principal_frame(mesh).extents[1]; }
 
 GrainSet generate_grain_set(GrainPreset preset, int count, std::uint64_t seed, SieveRange sieve, int faces) {
@@ -96,19 +105,20 @@ GrainSet import_grain_set(const std::filesystem::path& folder, int face_budget, 
   }
   std::vector<std::filesystem::path> files;
   for (const auto& entry : std::filesystem::directory_iterator(folder)) {
-    const std::string ext = lower(entry.path().extension().string());
-    if (entry.is_regular_file() && (ext == ".stl" || ext == ".obj" || ext == ".ply")) files.push_back(entry.path());
+    if (entry.is_regular_file() && is_grain_file(entry.path())) files.push_back(entry.path());
   }
   std::sort(files.begin(), files.end());
   if (files.empty()) {
-    input_error("grain folder '{}' holds no .stl, .obj or .ply file; put one mesh per grain there",
+    input_error("grain folder '{}' holds no .stl, .obj, .ply or .dat (spherical-harmonic) file; put one file per "
+                "grain there",
                 folder.string());
   }
   GrainSet set;
   std::vector<double> measured;
   for (const auto& file : files) {
-    const TriMesh loaded = load_mesh(file);
-    SimplifyResult s = simplify_mesh(loaded, face_budget);
+    // An SH grain is meshed at the budget directly (its size is set below, so its unit does not matter).
+    SimplifyResult s = is_sh_file(file) ? SimplifyResult{load_sh_grain(file, face_budget, ShOptions{1.0, 0})}
+                                        : simplify_mesh(load_mesh(file), face_budget);
     if (!s.within_budget) {
       set.notes.push_back(fmt::format("{}: {} faces could not keep the volume within 1 % and the mesh closed; "
                                       "kept {} faces (volume error {:.2f} %)",

@@ -8,6 +8,7 @@
 #pragma once
 
 #include "grains/generator.h"
+#include "grains/sh_grain.h"
 
 #include <cstdint>
 #include <filesystem>
@@ -44,12 +45,23 @@ GrainSet generate_grain_set(GrainPreset preset, int count, std::uint64_t seed, S
                             int faces = 2000);
 GrainSet generate_grain_set(const GeneratorSpec& spec, int count, std::uint64_t seed, SieveRange sieve = {});
 
-// Every STL, OBJ and PLY file in `folder` (not recursive), sorted by name:
-// read, checked and repaired (load_mesh), simplified to `face_budget` keeping
-// volume within 1 % and the mesh closed (budget raised when it cannot; noted),
-// centred and rotated into the principal frame, and scaled so that sizes spread
-// over the sieve range in the grains' own size order (the largest scanned grain
-// becomes the largest in the set). Throws InputError for a missing or empty folder.
+// True for the files a grain folder holds: meshes (.stl, .obj, .ply) and
+// spherical-harmonic coefficient files (.dat, sh_grain.h), in any case.
+bool is_grain_file(const std::filesystem::path& path);
+
+// One grain file as a closed mesh: an SH file meshed at `sh_faces` faces and
+// brought to metres by `sh_options` (load_sh_grain), or a mesh file read,
+// checked and repaired as it is (load_mesh; its coordinates taken as metres).
+TriMesh load_grain_file(const std::filesystem::path& path, int sh_faces, const ShOptions& sh_options);
+
+// Every grain file in `folder` (is_grain_file; not recursive), sorted by name:
+// a mesh read, checked and repaired (load_mesh), simplified to `face_budget`
+// keeping volume within 1 % and the mesh closed (budget raised when it cannot;
+// noted); an SH file meshed at `face_budget` faces directly (sh_mesh). Each
+// is centred and rotated into the principal frame, and scaled so that sizes
+// spread over the sieve range in the grains' own size order (the largest
+// scanned grain becomes the largest in the set). Throws InputError for a
+// missing or empty folder, or a bad file (naming it).
 GrainSet import_grain_set(const std::filesystem::path& folder, int face_budget, SieveRange sieve = {});
 
 }  // namespace grainlab

@@ -45,7 +45,7 @@ const std::array kHeadFields{
     GL_FIELD("", "seed", seed, "seed of every random choice (grain shapes, sizes, placement); same seed, same run"),
 
     GL_FIELD("grains", "preset", grains.preset, "synthetic grain class: glass-beads | rounded | sub-angular | angular"),
-    GL_FIELD("grains", "folder", grains.folder, "if not empty: import every STL/OBJ/PLY mesh in this folder instead of the preset"),
+    GL_FIELD("grains", "folder", grains.folder, "if not empty: import every STL/OBJ/PLY mesh and spherical-harmonic .dat file in this folder instead of the preset"),
     GL_FIELD("grains", "shapes", grains.shapes, "number of distinct grain shapes in the library (grains reuse them, scaled)"),
     GL_FIELD("grains", "faces", grains.faces, "face budget per grain shape (>= 100)"),
     GL_FIELD("grains", "d_min", grains.d_min, "m, smallest sieve size (0.707 mm: retained on sieve #25)"),

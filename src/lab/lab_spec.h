@@ -23,7 +23,7 @@ namespace grainlab {
 
 struct GrainsSpec {
   std::string preset = "rounded";      // glass-beads | rounded | sub-angular | angular
-  std::string folder;                  // if set: import every STL/OBJ/PLY here instead
+  std::string folder;                  // if set: import every STL/OBJ/PLY/.dat (SH) here instead
   int shapes = 24;                     // distinct shapes in the library (grains reuse them, scaled)
   int faces = 200;                     // face budget per grain shape (the paper's scans: 2000; 200 keeps
                                        // the demo under 10 minutes on 2 cores)
