@@ -130,7 +130,9 @@ int run_stats(const StatsOptions& o) {
     std::vector<ShapeMetrics> metrics;
     int as_pieces = 0;
     for (const fs::path& file : sets[set]) {
-      const TriMesh mesh = load_grain_file(file, o.faces, o.sh);
+      std::vector<std::string> notes;
+      const TriMesh mesh = load_grain_file(file, o.faces, o.sh, &notes);
+      for (const std::string& note : notes) fmt::print(stderr, "grainlab grains stats: note: {}\n", note);
       const ShapeMetrics s = shape_metrics(mesh);
       // What a run would collide (grains.representation): the hull, or convex pieces.
       std::size_t pieces = 1;

@@ -2,6 +2,7 @@
 // (method in lab/index_densities.h), printed with their spread over seeds and
 // as the two config lines that let `grainlab run` skip the measurement.
 #include "apps/commands.h"
+#include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/timer.h"
 #include "io/config.h"
@@ -52,6 +53,7 @@ int run_index(const IndexOptions& o) {
   if (o.stress > 0) spec.consolidation.normal_stress = o.stress;
   if (o.seed > 0) spec.seed = o.seed;
   spec.numerics.threads = o.threads;
+  if (!o.json.empty()) check_file_target(o.json);  // before minutes of work, not after
   fmt::print("grainlab grains index: {} ({} shapes, {} faces, sieve {:.3f}-{:.3f} mm), box {:g} x {:g} x {:g} "
              "d_max, {} seeds, compaction at {:.0f} kPa, loose deposition friction {:g}\n",
              spec.grains.folder.empty() ? spec.grains.preset : spec.grains.folder, spec.grains.shapes,
@@ -90,8 +92,7 @@ int run_index(const IndexOptions& o) {
     }
     fs::create_directories(o.keep);
     store = std::make_unique<KeptPreparations>(o.keep, [] { return g_index_stop != 0; });
-    std::signal(SIGINT, on_index_stop);
-    std::signal(SIGTERM, on_index_stop);
+    for (const int sig : {SIGINT, SIGTERM, SIGHUP, SIGXFSZ}) std::signal(sig, on_index_stop);
   }
   Stopwatch clock;
   IndexDensities d;

@@ -1,13 +1,17 @@
 // `grainlab run FILE`: a lab test (direct shear, oedometer, triaxial) from a TOML config, with progress,
 // series.csv (with the analysis columns of io/shear_analysis.h) and run.json,
 // ParaView snapshots in paraview/ during shear, the final analysis files in
-// analysis/, checkpoints on an interval and on SIGINT/SIGTERM, --resume, and
-// at the end the HTML report in report/. Every output file is written to a
-// temporary name and renamed.
+// analysis/, checkpoints on an interval and on SIGINT/SIGTERM/SIGHUP/SIGXFSZ,
+// --resume, and at the end the HTML report in report/. Every output file is
+// written to a temporary name and renamed; one run at a time holds the output
+// folder's lock (core/folder_lock.h); a write that fails (a full disk, the
+// file-size limit) ends the run naming the last checkpoint, which is intact.
 #include "apps/commands.h"
 #include "apps/report.h"
 #include "apps/run_preparation.h"
 #include "core/error.h"
+#include "core/folder_lock.h"
+#include "core/step_pacer.h"
 #include "core/thread_tuner.h"
 #include "core/timer.h"
 #include "io/analysis_files.h"
@@ -94,6 +98,9 @@ void write_run_json(const LabTest& test, const std::filesystem::path& out, doubl
   write_json_file(out / "run.json", j);
 }
 
+int run_loop(const RunOptions& o, const LabSpec& spec, const LabSpec& keyed, PreparedRun& prepared,
+             const std::filesystem::path& out, std::string& last_checkpoint);
+
 int run(const RunOptions& o) {
   const ContactLaw law = o.law.empty() ? ContactLaw{} : parse_contact_law(o.law);
   if (o.print_defaults) {
@@ -139,9 +146,15 @@ int run(const RunOptions& o) {
                   "or start a new run in another output.folder",
                   out.string(), fmt::join(diff, ", "));
   }
-  // A stop signal while the specimen is prepared keeps the preparation in progress and stops.
-  std::signal(SIGINT, on_stop_signal);
-  std::signal(SIGTERM, on_stop_signal);
+  // One run at a time in a folder: a second one would mix its files with this one's.
+  const FolderLock lock(out, "grainlab run");
+  if (const int stale = remove_stale_temporaries(out))
+    fmt::print("removed {} temporary file(s) that a killed run left in '{}'\n", stale, out.string());
+  // A stop signal while the specimen is prepared keeps the preparation in
+  // progress and stops. A hang-up (the terminal closed) and the file-size
+  // limit stop the run the same way (SIGXFSZ's default would kill it unsaved;
+  // handled, the write that crossed the limit fails with EFBIG instead).
+  for (const int sig : {SIGINT, SIGTERM, SIGHUP, SIGXFSZ}) std::signal(sig, on_stop_signal);
   PreparedRun prepared;
   try {
     prepared = prepare_run(spec, out, o.resume, [] { return g_stop_signal != 0; });
@@ -175,11 +188,32 @@ int run(const RunOptions& o) {
     std::filesystem::create_directories(out);
     write_file_atomically(out / "config.toml", to_toml(spec));
   }
+  // The last checkpoint written whole, for the message of a write that fails.
+  std::string last_checkpoint =
+      o.resume ? fmt::format("'{}' (step {})", checkpoint.string(), test.world().state.step) : std::string();
+  try {
+    return run_loop(o, spec, keyed, prepared, out, last_checkpoint);
+  } catch (const WriteError& e) {
+    throw WriteError(fmt::format(
+        "{}. {}; every file written before is whole (each is written to a temporary name and renamed)", e.what(),
+        last_checkpoint.empty() ? std::string("No checkpoint was written yet")
+                                : fmt::format("The last checkpoint, {}, is intact: once the file can be written, "
+                                              "continue with `grainlab run {} --resume`",
+                                              last_checkpoint, o.use_defaults ? "--default" : o.file)));
+  }
+}
+
+// The loop of a run whose test is prepared (run() above did the checks).
+int run_loop(const RunOptions& o, const LabSpec& spec, const LabSpec& keyed, PreparedRun& prepared,
+             const std::filesystem::path& out, std::string& last_checkpoint) {
+  LabTest& test = *prepared.test;
+  const std::filesystem::path checkpoint = out / "checkpoint.bin";
   ShearSnapshots snapshots(out, test, o.resume);
   if (!o.resume && prepared.specimen) snapshots.write_loading_start(test);
   const auto save = [&] {
     save_checkpoint(checkpoint, test.world().state, test.save(), config_hash(keyed),
                     grains_fingerprint(test.world().model));
+    last_checkpoint = fmt::format("'{}' (step {})", checkpoint.string(), test.world().state.step);
     drop_kept_trials(out);  // the run goes on from its checkpoint now
   };
 
@@ -201,8 +235,11 @@ int run(const RunOptions& o) {
   int phase = test.phase_index();
   std::int64_t shear_start_step = test.loading_start_step(), steps_at_start = w.state.step;
   bool running = true;
+  StepPacer pacer;  // a stop signal is seen within about a quarter second
   while (running) {
-    running = test.advance(200);
+    const std::int64_t before = w.state.step;
+    running = test.advance(pacer.next());
+    pacer.done(w.state.step - before);
     if (test.series().size() != written_rows) {
       write_series(test, out);
       written_rows = test.series().size();

@@ -5,6 +5,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace grainlab {
 
@@ -20,12 +21,26 @@ class RunError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// A file could not be written (disk full, a file-size limit, permissions):
+// a fault of the system, not of the input. The message names the file.
+class WriteError : public RunError {
+ public:
+  using RunError::RunError;
+};
+
 // A run asked to stop (a stop signal) while it prepared, before it could
 // checkpoint as a run: what could be kept was kept (the message says what).
 class Stopped : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
+
+// `text` for a message: whole when short, else its first `max` characters
+// and how long it was, so that a hostile value never floods the terminal.
+inline std::string excerpt(std::string_view text, std::size_t max = 60) {
+  if (text.size() <= max) return std::string(text);
+  return fmt::format("{}... ({} characters)", text.substr(0, max), text.size());
+}
 
 // Throws InputError with a formatted message.
 template <typename... Args>

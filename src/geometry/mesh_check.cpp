@@ -261,7 +261,7 @@ MeshCheck check_mesh(const TriMesh& mesh) {
   return c;
 }
 
-TriMesh repair_mesh(const TriMesh& mesh, const std::string& name) {
+TriMesh repair_mesh(const TriMesh& mesh, const std::string& name, std::vector<std::string>* notes) {
   const std::size_t nv0 = mesh.vertices.size();
   if (mesh.faces.empty() || nv0 == 0) {
     input_error("mesh '{}': the mesh is empty (no faces); export the grain's closed surface", name);
@@ -381,14 +381,19 @@ TriMesh repair_mesh(const TriMesh& mesh, const std::string& name) {
     }
     if (v < 0) {
       for (Index f : component) std::swap(out.faces[f][1], out.faces[f][2]);
+      if (notes)
+        notes->push_back(fmt::format("mesh '{}': {} wound inward (normals pointing into the grain, signed volume "
+                                     "{:.4g} in the file's units cubed); turned outward. Export it with outward normals "
+                                     "to be rid of this note",
+                                     name, count(static_cast<Index>(component.size()), "face is", "faces are"), v));
     }
   }
   return out;
 }
 
-TriMesh load_mesh(const std::filesystem::path& path) {
+TriMesh load_mesh(const std::filesystem::path& path, std::vector<std::string>* notes) {
   const std::string name = path.string();
-  TriMesh m = repair_mesh(read_mesh(path), name);
+  TriMesh m = repair_mesh(read_mesh(path), name, notes);
   const MeshCheck c = check_mesh(m);
   if (!c.ok()) {
     input_error("mesh '{}': still defective after repair: {}; fix it in a mesh editor and re-export",

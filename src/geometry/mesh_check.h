@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace grainlab {
 
@@ -46,9 +47,15 @@ MeshCheck check_mesh(const TriMesh& mesh);
 // indices, non-finite, open, non-manifold, non-orientable, zero volume.
 // Every closed component is made outward on its own, so the inner wall of a
 // hollow shell would be flipped too: grains are taken to be solid.
-TriMesh repair_mesh(const TriMesh& mesh, const std::string& name);
+// A component wound inward (negative signed volume: normals pointing in, as
+// some exporters write them) is turned outward, not refused: closed and
+// consistent, its inside is unambiguous, and every measure and the collision
+// need the outward one. When `notes` is given, each such repair adds a line
+// there for the user (what was found, that it was turned).
+TriMesh repair_mesh(const TriMesh& mesh, const std::string& name, std::vector<std::string>* notes = nullptr);
 
-// Reads, repairs and checks a user's mesh file: the one way such files enter grainlab.
-TriMesh load_mesh(const std::filesystem::path& path);
+// Reads, repairs and checks a user's mesh file: the one way such files enter
+// grainlab. `notes` as for repair_mesh.
+TriMesh load_mesh(const std::filesystem::path& path, std::vector<std::string>* notes = nullptr);
 
 }  // namespace grainlab

@@ -7,8 +7,17 @@
 // float32, then a uint16 attribute), so a whole file is 84 + 50 n bytes.
 // An ASCII STL starts with "solid"; a binary header may too, so the size
 // test decides first.
+//
+// PLY: a text header ("element vertex N", "property float x", ...,
+// "end_header") announces each element's count; assimp reserves memory for
+// it before reading. Every element takes at least, per property, one byte
+// (binary: the scalar's size; a list: its count's size) or two characters
+// (ASCII: a digit and a separator), so counts whose total exceeds the bytes
+// after the header are refused before assimp sees the file.
 #include "geometry/mesh_io.h"
 
+#include "core/atomic_file.h"
+#include "core/bounded_read.h"
 #include "core/error.h"
 
 #include <assimp/Importer.hpp>
@@ -26,6 +35,7 @@
 #include <cstring>
 #include <fstream>
 #include <map>
+#include <sstream>
 #include <system_error>
 
 namespace grainlab {
@@ -72,29 +82,79 @@ void validate_stl(const std::filesystem::path& path, std::uintmax_t size) {
               name, size);
 }
 
-// Writes `bytes` to `path` through a temporary file in the same directory, renamed into place.
-void write_atomically(const std::filesystem::path& path, const std::string& bytes) {
-  const std::filesystem::path tmp = path.string() + ".tmp-" + std::to_string(::getpid());
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) {
-      input_error("cannot write '{}': {}; check that the directory exists and is writable",
-                  path.string(), std::strerror(errno));
-    }
-    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    out.close();
-    if (!out) {
-      std::error_code ec;
-      std::filesystem::remove(tmp, ec);
-      input_error("cannot write '{}': write failed (disk full?)", path.string());
+// Bytes of one PLY scalar type, 0 if unknown.
+std::uintmax_t ply_type_size(std::string_view t) {
+  if (t == "char" || t == "uchar" || t == "int8" || t == "uint8") return 1;
+  if (t == "short" || t == "ushort" || t == "int16" || t == "uint16") return 2;
+  if (t == "int" || t == "uint" || t == "float" || t == "int32" || t == "uint32" || t == "float32") return 4;
+  if (t == "double" || t == "float64") return 8;
+  return 0;
+}
+
+// Refuses a PLY whose header announces more elements than the file can hold.
+void validate_ply(const std::filesystem::path& path, std::uintmax_t size) {
+  const std::string name = path.string();
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  bool ascii = true;
+  std::uintmax_t header = 0, need = 0;
+  struct Element {
+    std::string name;
+    std::uintmax_t count = 0, min_bytes = 0;
+  };
+  std::vector<Element> elements;
+  const auto add = [&](const Element& e) {
+    const std::uintmax_t per = std::max<std::uintmax_t>(e.min_bytes, 1);  // no property: still refuse absurd counts
+    if (e.count > size / per) need = size + 1;  // also keeps count * per from overflowing
+    else need += e.count * per;
+    elements.push_back(e);
+  };
+  Element current;
+  bool open_element = false;
+  while (header < 65536 && std::getline(in, line)) {
+    header += line.size() + 1;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    std::istringstream words(line);
+    std::string word;
+    words >> word;
+    if (word == "format") {
+      std::string f;
+      words >> f;
+      ascii = f == "ascii";
+    } else if (word == "element") {
+      if (open_element) add(current);
+      current = {};
+      open_element = true;
+      words >> current.name >> current.count;
+      if (!words) input_error("mesh '{}': PLY header line '{}' is not 'element NAME COUNT'; re-export the mesh", name,
+                              excerpt(line, 80));
+    } else if (word == "property" && open_element) {
+      std::string type, count_type;
+      words >> type;
+      if (type == "list") words >> count_type;
+      current.min_bytes += ascii ? 2 : std::max<std::uintmax_t>(1, ply_type_size(type == "list" ? count_type : type));
+    } else if (word == "end_header") {
+      if (open_element) add(current);
+      const std::uintmax_t body = size - std::min(size, header);
+      if (need > body) {
+        std::string counts;
+        for (const Element& e : elements) counts += fmt::format("{}{} {}", counts.empty() ? "" : ", ", e.count, e.name);
+        input_error("mesh '{}': its PLY header announces {} elements ({}), which take at least {} bytes, but the "
+                    "file holds {} bytes after its header; the file is truncated or its header is wrong, re-export "
+                    "the mesh",
+                    name, elements.size(), excerpt(counts, 200),
+                    need > size ? fmt::format("more than the whole file's {}", size) : std::to_string(need), body);
+      }
+      return;
     }
   }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) {
-    std::filesystem::remove(tmp, ec);
-    input_error("cannot write '{}': renaming the temporary file failed ({})", path.string(), ec.message());
-  }
+  // No end_header within 64 KiB: assimp reports the malformed header.
+}
+
+// A user's path: a missing folder or a device is bad input (InputError), the rest a write failure.
+void write_mesh_file(const std::filesystem::path& path, std::string_view bytes) {
+  check_file_target(path);
+  write_file_atomically(path, bytes);
 }
 
 }  // namespace
@@ -112,10 +172,11 @@ TriMesh read_mesh(const std::filesystem::path& path) {
   if (ext != ".stl" && ext != ".obj" && ext != ".ply") {
     input_error("mesh '{}': unsupported file type '{}'; convert it to STL, OBJ or PLY", name, ext);
   }
-  const std::uintmax_t size = std::filesystem::file_size(path, ec);
-  if (ec) input_error("mesh '{}': cannot read its size ({})", name, ec.message());
+  // 1 GiB: a scanned grain of 2000 faces is about 100 kB, a whole CT surface of millions of faces some 100 MB.
+  const std::uintmax_t size = bounded_file_size(path, 1024 * kMiB, "mesh file");
   if (size == 0) input_error("mesh '{}': the file is empty (0 bytes); re-export the mesh", name);
   if (ext == ".stl") validate_stl(path, size);
+  if (ext == ".ply") validate_ply(path, size);
 
   Assimp::Importer importer;
   // Drop normals, colours and texture coordinates. No assimp vertex joining:
@@ -125,11 +186,20 @@ TriMesh read_mesh(const std::filesystem::path& path) {
   importer.SetPropertyInteger(AI_CONFIG_PP_RVC_FLAGS,
                               aiComponent_NORMALS | aiComponent_TANGENTS_AND_BITANGENTS |
                                   aiComponent_COLORS | aiComponent_TEXCOORDS);
-  const aiScene* scene = importer.ReadFile(
-      path.string(), aiProcess_RemoveComponent | aiProcess_Triangulate);
+  const aiScene* scene = importer.ReadFile(path.string(), aiProcess_RemoveComponent);
   if (scene == nullptr) {
     input_error("mesh '{}': cannot be parsed ({}); check that it is a valid {} file or re-export it",
                 name, importer.GetErrorString(), ext.substr(1));
+  }
+  // A face of no index (a crafted PLY) makes assimp's triangulation abort the
+  // process (an assertion): refuse it before triangulating.
+  for (unsigned mi = 0; mi < scene->mNumMeshes; ++mi)
+    for (unsigned f = 0; f < scene->mMeshes[mi]->mNumFaces; ++f)
+      if (scene->mMeshes[mi]->mFaces[f].mNumIndices == 0)
+        input_error("mesh '{}': face {} has no vertex; the file is damaged, re-export the mesh", name, f + 1);
+  scene = importer.ApplyPostProcessing(aiProcess_Triangulate);
+  if (scene == nullptr) {
+    input_error("mesh '{}': cannot be triangulated ({}); re-export it as triangles", name, importer.GetErrorString());
   }
 
   // Concatenate, merging exactly identical positions (by their bits, so that a
@@ -191,7 +261,7 @@ void write_stl(const TriMesh& mesh, const std::filesystem::path& path) {
     std::memcpy(p, rec, 48);  // the 2-byte attribute stays zero
     p += 50;
   }
-  write_atomically(path, bytes);
+  write_mesh_file(path, bytes);
 }
 
 void write_obj(const TriMesh& mesh, const std::filesystem::path& path) {
@@ -204,7 +274,7 @@ void write_obj(const TriMesh& mesh, const std::filesystem::path& path) {
   for (const Face& f : mesh.faces) {
     fmt::format_to(std::back_inserter(buf), "f {} {} {}\n", f[0] + 1, f[1] + 1, f[2] + 1);
   }
-  write_atomically(path, std::string(buf.data(), buf.size()));
+  write_mesh_file(path, std::string(buf.data(), buf.size()));
 }
 
 }  // namespace grainlab

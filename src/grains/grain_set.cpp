@@ -58,8 +58,9 @@ bool is_grain_file(const std::filesystem::path& path) {
   return ext == ".stl" || ext == ".obj" || ext == ".ply" || is_sh_file(path);
 }
 
-TriMesh load_grain_file(const std::filesystem::path& path, int sh_faces, const ShOptions& sh_options) {
-  return is_sh_file(path) ? load_sh_grain(path, sh_faces, sh_options) : load_mesh(path);
+TriMesh load_grain_file(const std::filesystem::path& path, int sh_faces, const ShOptions& sh_options,
+                        std::vector<std::string>* notes) {
+  return is_sh_file(path) ? load_sh_grain(path, sh_faces, sh_options) : load_mesh(path, notes);
 }
 
 double size_of(const TriMesh& mesh) { return principal_frame(mesh).extents[1]; }

@@ -51,8 +51,10 @@ bool is_grain_file(const std::filesystem::path& path);
 
 // One grain file as a closed mesh: an SH file meshed at `sh_faces` faces and
 // brought to metres by `sh_options` (load_sh_grain), or a mesh file read,
-// checked and repaired as it is (load_mesh; its coordinates taken as metres).
-TriMesh load_grain_file(const std::filesystem::path& path, int sh_faces, const ShOptions& sh_options);
+// checked and repaired as it is (load_mesh; its coordinates taken as metres;
+// what the repair did goes to `notes` when given).
+TriMesh load_grain_file(const std::filesystem::path& path, int sh_faces, const ShOptions& sh_options,
+                        std::vector<std::string>* notes = nullptr);
 
 // Every grain file in `folder` (is_grain_file; not recursive), sorted by name:
 // a mesh read, checked and repaired (load_mesh), simplified to `face_budget`

@@ -22,6 +22,7 @@
 // candidates anew, the same contacts from a list that may differ.
 #include "io/checkpoint.h"
 
+#include "core/bounded_read.h"
 #include "core/bytes.h"
 #include "core/error.h"
 #include "core/atomic_file.h"
@@ -34,6 +35,8 @@
 #include <fstream>
 #include <iterator>
 #include <string>
+
+#include <unistd.h>
 
 namespace grainlab {
 
@@ -290,14 +293,13 @@ void save_checkpoint(const std::filesystem::path& path, const State& state, std:
 }
 
 Checkpoint load_checkpoint(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in)
+  if (::access(path.c_str(), R_OK) != 0)
     input_error("cannot open checkpoint '{}': it does not exist or is not readable. A run writes checkpoint.bin "
                 "into its output folder; run without --resume to start afresh.",
                 path.string());
-  const std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) input_error("checkpoint '{}': read error", path.string());
-  return decode_checkpoint(bytes, path.string());
+  // Every count inside is checked against the bytes that follow it (core/bytes.h).
+  const std::string bytes = read_bounded_file(path, kMaxCheckpointBytes, "checkpoint");
+  return decode_checkpoint({reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()}, path.string());
 }
 
 }  // namespace grainlab

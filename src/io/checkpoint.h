@@ -61,7 +61,12 @@ std::uint64_t specimen_hash(const LabSpec& spec);
 void save_checkpoint(const std::filesystem::path& path, const State& state, std::span<const std::uint8_t> protocol,
                      std::uint64_t config_hash, std::uint32_t grains = 0);
 
-// Reads a checkpoint; throws InputError for a missing, truncated, corrupted or wrong-version file.
+// The largest checkpoint load_checkpoint reads (64 GiB: a paper-size run of
+// 37,000 grains checkpoints in tens of megabytes); larger is no checkpoint.
+inline constexpr std::uintmax_t kMaxCheckpointBytes = std::uintmax_t{64} << 30;
+
+// Reads a checkpoint; throws InputError for a missing, truncated, corrupted,
+// oversized, non-regular (a device) or wrong-version file.
 Checkpoint load_checkpoint(const std::filesystem::path& path);
 
 // The checkpoint file's bytes (save_checkpoint writes exactly these).

@@ -6,6 +6,7 @@
 // sand preset goes first, and validate() checks every value for sense.
 #include "io/config.h"
 
+#include "core/bounded_read.h"
 #include "core/error.h"
 #include "io/spec_fields.h"
 #include "lab/lab_registry.h"
@@ -609,6 +610,28 @@ void assign(const SpecField& f, const SpecFieldRef& ref, const toml::node& n, co
 
 }  // namespace
 
+// Refuses a key longer than kMaxKeyLength or a string longer than
+// kMaxStringLength (a path's limit, PATH_MAX), quoting only their start: every
+// later message that echoes a value is then bounded too.
+constexpr std::size_t kMaxKeyLength = 100, kMaxStringLength = 4096;
+
+void check_lengths(const toml::node& node, const std::string& source) {
+  if (const toml::table* t = node.as_table()) {
+    for (const auto& [k, n] : *t) {
+      if (k.str().size() > kMaxKeyLength)
+        input_error("{}: a key of {} characters ('{}'), longer than any grainlab key ({} at most); fix the key",
+                    where(source, line_of(k.source())), k.str().size(), excerpt(k.str(), 40), kMaxKeyLength);
+      check_lengths(n, source);
+    }
+  } else if (const toml::array* a = node.as_array()) {
+    for (const toml::node& n : *a) check_lengths(n, source);
+  } else if (const auto* s = node.as_string(); s && s->get().size() > kMaxStringLength) {
+    input_error("{}: a string of {} characters (\"{}\"), longer than the {} a value (a path included) can be; "
+                "fix the value",
+                where(source, line_of(node.source())), s->get().size(), excerpt(s->get(), 40), kMaxStringLength);
+  }
+}
+
 // ---------------------------------------------------------------------------
 // Public API.
 
@@ -620,8 +643,9 @@ LabSpec parse_config(std::string_view toml_text, const std::string& source_name)
     input_error("{}: TOML syntax error: {}. Fix the file at that place (TOML is `key = value` lines under "
                 "[table] headers; strings go in double quotes).",
                 where(source_name, static_cast<int>(e.source().begin.line), static_cast<int>(e.source().begin.column)),
-                e.description());
+                excerpt(e.description(), 300));
   }
+  check_lengths(root, source_name);
 
   // Match every key in the file to a field; refuse what is not a field.
   std::vector<std::pair<const SpecField*, const toml::node*>> given;
@@ -729,12 +753,8 @@ LabSpec load_config(const std::filesystem::path& file) {
                 file.string(), std::filesystem::current_path(ec).string(), file.string());
   if (std::filesystem::is_directory(file, ec))
     input_error("config file '{}' is a folder; give the path of a .toml file.", file.string());
-  std::ifstream in(file, std::ios::binary);
-  if (!in) input_error("config file '{}' cannot be read (check its permissions).", file.string());
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) input_error("config file '{}': read error.", file.string());
-  return parse_config(text.str(), file.string());
+  // A config is a few kilobytes; 4 MiB bounds what a wrong path (/dev/zero, a mesh) can make it allocate.
+  return parse_config(read_bounded_file(file, 4 * kMiB, "config file"), file.string());
 }
 
 void validate(const LabSpec& spec, const std::string& source_name) {

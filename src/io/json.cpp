@@ -2,6 +2,7 @@
 // so run.json and the TOML config always name the same keys.
 #include "io/json.h"
 
+#include "core/bounded_read.h"
 #include "core/error.h"
 #include "core/atomic_file.h"
 #include "io/spec_fields.h"
@@ -33,12 +34,9 @@ void write_json_file(const std::filesystem::path& path, const nlohmann::json& j)
 }
 
 nlohmann::json read_json_file(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) input_error("cannot open '{}' for reading: check that it exists", path.string());
-  std::ostringstream text;
-  text << in.rdbuf();
+  const std::string text = read_bounded_file(path, 256 * kMiB, "JSON file");
   try {
-    return nlohmann::json::parse(text.str());
+    return nlohmann::json::parse(text);
   } catch (const nlohmann::json::parse_error& e) {
     input_error("'{}' is not valid JSON (byte {}): {}", path.string(), e.byte, e.what());
   }

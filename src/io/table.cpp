@@ -2,6 +2,7 @@
 // CSV in with strtod, which reads those decimals back to the same bits.
 #include "io/table.h"
 
+#include "core/bounded_read.h"
 #include "core/error.h"
 
 #include <fmt/format.h>
@@ -92,11 +93,7 @@ Table parse_csv(const std::string& text, const std::string& source_name) {
 }
 
 Table read_csv(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) input_error("cannot open '{}' for reading: check that it exists", path.string());
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_csv(text.str(), path.string());
+  return parse_csv(read_bounded_file(path, 1024 * kMiB, "CSV table"), path.string());
 }
 
 }  // namespace grainlab

@@ -1,6 +1,8 @@
 // The XML tag scanner (definitions in xml_scanner.h).
 #include "io/xml_scanner.h"
 
+#include "core/bounded_read.h"
+
 #include <fstream>
 #include <sstream>
 #include <utility>
@@ -17,11 +19,7 @@ bool is_name_char(char c) {
 }  // namespace
 
 std::string read_text(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) input_error("cannot open '{}': check that the file exists and is readable", path.string());
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
+  return read_bounded_file(path, 1024 * kMiB, "XML file");
 }
 
 bool is_space(char c) { return c == ' ' || c == '\n' || c == '\r' || c == '\t'; }

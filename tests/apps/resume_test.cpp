@@ -3,6 +3,7 @@
 // included) is the same, byte for byte, as that of a run that was never
 // interrupted, and its ParaView collections list the same snapshots. A run
 // whose report cannot be written (no Python with matplotlib) still succeeds.
+#include "command_line.h"
 #include "io/pvd_reader.h"
 
 #include <gtest/gtest.h>
@@ -29,12 +30,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string read_file(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using apps_test::read_file;
 
 // Starts `grainlab run CONFIG [--resume]` with its output in `log`.
 pid_t start_run(const fs::path& config, bool resume, const fs::path& log) {

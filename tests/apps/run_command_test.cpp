@@ -1,5 +1,7 @@
 // `grainlab run` refuses bad configs with a clear message, a non-zero exit,
 // and writes nothing.
+#include "command_line.h"
+
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -11,21 +13,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Result {
-  int exit_code;
-  std::string output;
-};
+using apps_test::Result;
 
 // Runs the grainlab binary with `args`, capturing stdout and stderr.
-Result grainlab(const std::string& args) {
-  const std::string cmd = std::string(GRAINLAB_BINARY) + " " + args + " 2>&1";
-  FILE* pipe = popen(cmd.c_str(), "r");
-  std::string out;
-  char buf[4096];
-  while (pipe && std::fgets(buf, sizeof(buf), pipe)) out += buf;
-  const int status = pipe ? pclose(pipe) : -1;
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
-}
+Result grainlab(const std::string& args) { return apps_test::run_shell(std::string(GRAINLAB_BINARY) + " " + args); }
 
 class RunCommand : public ::testing::Test {
  protected:

@@ -4,6 +4,7 @@
 // columns, analysis/*.csv and *.json, paraview/ snapshots that read back,
 // run.json's micromechanics entries, and report/index.html with every figure
 // the report promised. Also `grainlab report` on its own.
+#include "command_line.h"
 #include "io/json.h"
 #include "io/pvd_reader.h"
 #include "io/table.h"
@@ -33,27 +34,12 @@ using grainlab::PolyData;
 using grainlab::PvdEntry;
 using grainlab::Table;
 
-std::string read_file(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-struct Result {
-  int exit_code;
-  std::string output;
-};
+using apps_test::read_file;
+using apps_test::Result;
 
 // Runs `grainlab ARGS` in folder `cwd` (stdout and stderr together), with `env` before it.
 Result run_grainlab(const fs::path& cwd, const std::string& args, const std::string& env = "") {
-  const std::string cmd = "cd '" + cwd.string() + "' && " + env + " '" + GRAINLAB_BINARY + "' " + args + " 2>&1";
-  FILE* pipe = popen(cmd.c_str(), "r");
-  std::string out;
-  char buf[4096];
-  while (pipe && std::fgets(buf, sizeof(buf), pipe)) out += buf;
-  const int status = pipe ? pclose(pipe) : -1;
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+  return apps_test::run_shell("cd '" + cwd.string() + "' && " + env + " '" + GRAINLAB_BINARY + "' " + args);
 }
 
 const std::vector<std::string> kAnalysisColumns = {"rotation_mean_deg", "rotation_band_deg",

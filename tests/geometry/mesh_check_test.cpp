@@ -211,9 +211,19 @@ TEST(MeshCheck, LoadMeshNamesTheFile) {
   for (Face& f : m.faces) std::swap(f[1], f[2]);
   std::swap(m.faces[17][1], m.faces[17][2]);
   write_obj(m, dir / "inverted.obj");
-  const TriMesh r = load_mesh(dir / "inverted.obj");
+  std::vector<std::string> notes;
+  const TriMesh r = load_mesh(dir / "inverted.obj", &notes);
   EXPECT_TRUE(check_mesh(r).ok());
   EXPECT_NEAR(mass_properties(r).volume / mass_properties(icosphere(1e-3, 2)).volume, 1.0, 1e-6);
+  // Turned outward, and the user is told (a flipped mesh measured like the right one, silently).
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_CONTAINS(notes[0], "inverted.obj");
+  EXPECT_CONTAINS(notes[0], "wound inward");
+  // An outward mesh gets no note.
+  notes.clear();
+  write_obj(icosphere(1e-3, 2), dir / "outward.obj");
+  load_mesh(dir / "outward.obj", &notes);
+  EXPECT_TRUE(notes.empty());
 }
 
 }  // namespace

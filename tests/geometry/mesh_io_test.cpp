@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <fstream>
 
 namespace grainlab {
@@ -162,6 +163,52 @@ TEST(MeshIo, GarbageRefused) {
   const std::string msg = test::input_error_of([&] { read_mesh(dir / "junk.ply"); });
   EXPECT_CONTAINS(msg, "junk.ply");
   EXPECT_CONTAINS(msg, "cannot be parsed");
+}
+
+// A PLY header may announce any count; assimp reserved memory for it (a
+// 1 kB file claiming 1e8 vertices took 1.2 GB). The counts are checked
+// against the bytes after the header first, ASCII and binary.
+TEST(MeshIo, PlyHeaderClaimingMoreThanTheFileHoldsIsRefused) {
+  test::TempDir dir;
+  const std::string tail = "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  write_text(dir / "ascii.ply", "ply\nformat ascii 1.0\nelement vertex 100000000\nproperty float x\nproperty float y\n"
+                                "property float z\n" + tail + "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  std::string msg = test::input_error_of([&] { read_mesh(dir / "ascii.ply"); });
+  EXPECT_CONTAINS(msg, "ascii.ply");
+  EXPECT_CONTAINS(msg, "100000000 vertex");
+  EXPECT_CONTAINS(msg, "re-export");
+  // Binary: 3 floats a vertex, 12 bytes; 4 vertices and a face need at least 4 x 12 + 1 (its count byte).
+  const std::string binary_header = "ply\nformat binary_little_endian 1.0\nelement vertex 4\nproperty float x\n"
+                                    "property float y\nproperty float z\n" + tail;
+  write_text(dir / "binary.ply", binary_header + std::string(40, '\0'));
+  msg = test::input_error_of([&] { read_mesh(dir / "binary.ply"); });
+  EXPECT_CONTAINS(msg, "at least 49 bytes");
+  EXPECT_CONTAINS(msg, "holds 40 bytes after its header");
+  // Enough bytes, but the face has no vertex: assimp's triangulation aborted the process on it.
+  write_text(dir / "empty_face.ply", binary_header + std::string(49, '\0'));
+  msg = test::input_error_of([&] { read_mesh(dir / "empty_face.ply"); });
+  EXPECT_CONTAINS(msg, "face 1 has no vertex");
+  // The same header with the bytes it announces is read (the bound refuses no real file).
+  const float v[12] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
+  std::string ok(reinterpret_cast<const char*>(v), sizeof(v));
+  const std::string faces = "ply\nformat binary_little_endian 1.0\nelement vertex 4\nproperty float x\n"
+                            "property float y\nproperty float z\nelement face 4\n"
+                            "property list uchar int vertex_indices\nend_header\n";
+  for (const std::array<int, 3>& f : {std::array{0, 2, 1}, std::array{0, 1, 3}, std::array{1, 2, 3}, std::array{0, 3, 2}}) {
+    ok += '\3';
+    ok.append(reinterpret_cast<const char*>(f.data()), 12);
+  }
+  write_text(dir / "tet.ply", faces + ok);
+  EXPECT_EQ(read_mesh(dir / "tet.ply").faces.size(), 4u);
+}
+
+// A device or a pipe named like a mesh is refused before anything reads it.
+TEST(MeshIo, NonRegularFileIsRefused) {
+  test::TempDir dir;
+  std::filesystem::create_symlink("/dev/zero", dir / "zero.stl");
+  const std::string msg = test::input_error_of([&] { read_mesh(dir / "zero.stl"); });
+  EXPECT_CONTAINS(msg, "zero.stl");
+  EXPECT_CONTAINS(msg, "regular file");
 }
 
 TEST(MeshIo, UnwritablePath) {

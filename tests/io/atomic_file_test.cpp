@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include <sys/resource.h>
+#include <sys/stat.h>
 
 namespace grainlab {
 namespace {
@@ -70,8 +71,44 @@ TEST(AtomicFile, FailedWriteRemovesTheTemporaryAndKeepsTheOldFile) {
   ::setrlimit(RLIMIT_FSIZE, &old_limit);
   std::signal(SIGXFSZ, old_handler);
   EXPECT_NE(msg.find(file.string()), std::string::npos) << msg;
+  EXPECT_NE(msg.find("File too large"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("ulimit -f"), std::string::npos) << msg;
   EXPECT_EQ(slurp(file), "old");
   EXPECT_EQ(files_in(dir.path), 1u);
+}
+
+// `grains index --json /dev/full` once printed "wrote /dev/full": as root the
+// rename replaced the device with a regular file. A target that exists and is
+// no regular file is refused as bad input and left as it is.
+TEST(AtomicFile, ATargetThatIsNoRegularFileIsRefusedAndKept) {
+  test::IoTempDir dir;
+  const auto fifo = dir.path / "pipe.json";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  std::string msg = test::error_of<InputError>([&] { write_file_atomically(fifo, "{}"); });
+  EXPECT_NE(msg.find("pipe.json"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("not a regular file"), std::string::npos) << msg;
+  EXPECT_TRUE(std::filesystem::is_fifo(fifo));
+  msg = test::error_of<InputError>([&] { write_file_atomically(dir.path, "{}"); });
+  EXPECT_NE(msg.find("a folder"), std::string::npos) << msg;
+  EXPECT_EQ(files_in(dir.path), 1u);
+  // The check a command makes before it works: the same, and a missing folder is bad input too.
+  EXPECT_THROW(check_file_target(fifo), InputError);
+  msg = test::error_of<InputError>([&] { check_file_target(dir.path / "missing" / "index.json"); });
+  EXPECT_NE(msg.find("create the folder first"), std::string::npos) << msg;
+  EXPECT_NO_THROW(check_file_target(dir.path / "index.json"));
+}
+
+TEST(AtomicFile, StaleTemporariesOfAKilledRunAreRemovedAndNothingElse) {
+  test::IoTempDir dir;
+  std::filesystem::create_directories(dir.path / "paraview");
+  for (const char* name : {".series.csv.tmp.4242.0", "paraview/.grains_0003.vtp.tmp.17.12", "series.csv",
+                           ".grainlab.lock", "notes.tmp.txt", ".x.tmp.12", ".tmp.1.2"})
+    std::ofstream(dir.path / name) << "x";
+  EXPECT_EQ(remove_stale_temporaries(dir.path), 2);
+  EXPECT_FALSE(std::filesystem::exists(dir.path / ".series.csv.tmp.4242.0"));
+  EXPECT_FALSE(std::filesystem::exists(dir.path / "paraview/.grains_0003.vtp.tmp.17.12"));
+  for (const char* kept : {"series.csv", ".grainlab.lock", "notes.tmp.txt", ".x.tmp.12", ".tmp.1.2"})
+    EXPECT_TRUE(std::filesystem::exists(dir.path / kept)) << kept;
 }
 
 }  // namespace
