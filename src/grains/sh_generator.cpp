@@ -86,26 +86,28 @@ void validate(const ShSpectrum& s) {
   }
 }
 
+void set_random_degree(ShCoefficients& c, int n, double amplitude, Rng& rng) {
+  std::vector<double> x(static_cast<std::size_t>(2 * n + 1));
+  double length2 = 0;
+  for (double& v : x) {
+    v = rng.normal();
+    length2 += v * v;
+  }
+  const double k = length2 > 0 ? amplitude / std::sqrt(length2) : 0;
+  c.at(n, 0) = k * x[0];
+  for (int m = 1; m <= n; ++m) {
+    c.at(n, m) = std::complex<double>(x[2 * m - 1], x[2 * m]) * (k / std::numbers::sqrt2);
+    c.at(n, -m) = (m % 2 ? -1.0 : 1.0) * std::conj(c.at(n, m));
+  }
+}
+
 ShCoefficients draw_sh_coefficients(const ShSpectrum& spectrum, Rng& rng) {
-  const int degree = spectrum.degree();
-  ShCoefficients c(degree);
+  ShCoefficients c(spectrum.degree());
   const double a00 = std::sqrt(4 * std::numbers::pi);
   c.at(0, 0) = a00;
-  std::vector<double> x;
-  for (int n = 1; n <= degree; ++n) {
+  for (int n = 1; n <= c.degree; ++n) {
     const double amplitude = a00 * lognormal(spectrum.mean[n], spectrum.std[n], rng);
-    x.resize(static_cast<std::size_t>(2 * n + 1));
-    double length2 = 0;
-    for (double& v : x) {
-      v = rng.normal();
-      length2 += v * v;
-    }
-    const double k = length2 > 0 ? amplitude / std::sqrt(length2) : 0;
-    c.at(n, 0) = k * x[0];
-    for (int m = 1; m <= n; ++m) {
-      c.at(n, m) = std::complex<double>(x[2 * m - 1], x[2 * m]) * (k / std::numbers::sqrt2);
-      c.at(n, -m) = (m % 2 ? -1.0 : 1.0) * std::conj(c.at(n, m));
-    }
+    set_random_degree(c, n, amplitude, rng);
   }
   return c;
 }

@@ -32,6 +32,12 @@ struct ShSpectrum {
 // d_eq not 0 < min <= mean <= max with std >= 0.
 void validate(const ShSpectrum& spectrum);
 
+// Sets the coefficients of degree n (1 <= n <= c.degree) to a random
+// direction among its 2n + 1 real degrees of freedom (uniform under
+// rotations), of amplitude sqrt(sum_m |a_nm|^2) = `amplitude`, with
+// a_{n,-m} = (-1)^m conj(a_nm).
+void set_random_degree(ShCoefficients& c, int n, double amplitude, Rng& rng);
+
 // One random draw of coefficients of the spectrum's degree, with a_00 =
 // sqrt(4 pi) (mean radius about 1): A_n / A_0 drawn from the lognormal of
 // the spectrum's mean and std for n (exactly the mean where std = 0). Its r
