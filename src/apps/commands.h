@@ -6,7 +6,9 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cstdint>
 #include <functional>
+#include <string>
 
 namespace grainlab::apps {
 
@@ -24,6 +26,12 @@ Command add_grains_sh_commands(CLI::App& grains);
 
 // The options of a command that meshes SH files: --faces, --unit, --max-degree.
 void add_sh_file_options(CLI::App& cmd, int& faces, ShOptions& sh);
+
+// `grainlab grains generate --spectrum FILE`: `count` random SH grains drawn
+// from a spectrum file (io/sh_spectrum_file.h) written as binary STL files
+// to `out`, with their shape beside the measured set's.
+int run_generate_from_spectrum(const std::string& spectrum, int count, std::uint64_t seed, const std::string& out,
+                               int faces);
 
 // `grainlab run`: a direct shear test from a config file.
 Command add_run_command(CLI::App& app);

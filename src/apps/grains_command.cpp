@@ -27,6 +27,7 @@ namespace fs = std::filesystem;
 
 struct GenerateOptions {
   std::string preset;
+  std::string spectrum;
   int count = 50;
   std::uint64_t seed = 1;
   std::string out;
@@ -73,6 +74,8 @@ std::string set_summary(const std::vector<ShapeMetrics>& m) {
 }
 
 int run_generate(const GenerateOptions& o) {
+  if (!o.spectrum.empty()) return run_generate_from_spectrum(o.spectrum, o.count, o.seed, o.out, o.faces);
+  if (o.preset.empty()) input_error("grains generate needs --preset NAME or --spectrum SAND.toml");
   GeneratorSpec spec = preset_spec(parse_grain_preset(o.preset));
   spec.faces = o.faces;
   if (o.roundness) spec.roundness = *o.roundness;
@@ -176,19 +179,29 @@ Command add_grains_command(CLI::App& app) {
   }
   auto* gen = grains->add_subcommand(
       "generate",
-      "write COUNT synthetic grains of a preset as binary STL files (metres), one per grain.\n"
-      "Each grain is a random convex polytope whose corners are rounded by a sphere (then dented,\n"
+      "write COUNT synthetic grains of a preset, or drawn from a sand's spectrum, as binary STL files\n"
+      "(metres), one per grain.\n"
+      "With --preset, each grain is a random convex polytope whose corners are rounded by a sphere (then dented,\n"
       "with --convexity below 1); roundness is Wadell's (mean corner radius / largest inscribed\n"
       "circle, averaged over the three principal projections), elongation is I/L and flatness S/I\n"
       "(L >= I >= S principal dimensions).\n"
       "Sizes (the intermediate dimension I, what a sieve sorts by) spread evenly over [d-min, d-max].\n"
+      "With --spectrum instead, each grain is a random spherical-harmonic surface: per degree n an amplitude\n"
+      "A_n/A_0 drawn from the lognormal of the spectrum's mean and standard deviation, spread over the\n"
+      "2n+1 coefficients of degree n in a random direction (so in no preferred orientation), redrawn\n"
+      "while r <= 0 somewhere; then scaled to a volume-equivalent diameter drawn the same way from the\n"
+      "spectrum's (clamped to its range), centred and turned into its principal frame. Files sh-0001.stl,\n"
+      "...; the generated set's shape is printed beside the measured set's.\n"
       "The same seed gives the same files, bit for bit.");
-  gen->add_option("--preset", g->preset, presets)
-      ->required()
-      ->check(CLI::IsMember({"glass-beads", "rounded", "sub-angular", "angular"}));
+  auto* preset = gen->add_option("--preset", g->preset, presets)
+                     ->check(CLI::IsMember({"glass-beads", "rounded", "sub-angular", "angular"}));
+  auto* spectrum = gen->add_option("--spectrum", g->spectrum,
+                                   "spectrum file of a sand (TOML, from `grainlab grains spectrum`): draw random "
+                                   "spherical-harmonic grains with its spectrum and sizes instead of a preset")
+                       ->excludes(preset);
   gen->add_option("--count", g->count, "number of grains")->check(CLI::Range(1, 1000000))->capture_default_str();
   gen->add_option("--seed", g->seed, "random seed (same seed, same grains)")->capture_default_str();
-  gen->add_option("--out", g->out, "output folder (created if missing); files <preset>-0001.stl, ...")->required();
+  gen->add_option("--out", g->out, "output folder (created if missing); files <preset>-0001.stl, ... (sh-0001.stl, ... from --spectrum)")->required();
   gen->add_option("--faces", g->faces, "triangles per grain (the paper's scans: 2000)")
       ->check(CLI::Range(20, 1000000))
       ->capture_default_str();
@@ -212,6 +225,9 @@ Command add_grains_command(CLI::App& app) {
   gen->add_option("--d-max", g->d_max, "largest size (m): the passing sieve, default #20 = 0.841e-3")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
+  for (const char* o : {"--roundness", "--elongation", "--flatness", "--convexity", "--d-min", "--d-max"}) {
+    gen->get_option(o)->excludes(spectrum);  // a spectrum sets shapes and sizes itself
+  }
 
   auto* stats = grains->add_subcommand(
       "stats",

@@ -10,7 +10,9 @@
 #include "geometry/shape_metrics.h"
 #include "grains/grain_set.h"
 #include "grains/sh_fit.h"
+#include "grains/sh_generator.h"
 #include "grains/sh_grain.h"
+#include "io/sh_spectrum_file.h"
 
 #include <fmt/format.h>
 
@@ -187,6 +189,51 @@ int run_spectrum(const SpectrumOptions& o) {
 }
 
 }  // namespace
+
+int run_generate_from_spectrum(const std::string& spectrum_file, int count, std::uint64_t seed,
+                               const std::string& out, int faces) {
+  const ShSpectrumFile file = read_sh_spectrum(spectrum_file);
+  const ShSpectrum& spectrum = file.spectrum;
+  Stopwatch clock;
+  const ShGrains grains = generate_sh_grains(spectrum, count, seed, faces);
+  const double seconds = clock.seconds();
+  std::error_code ec;
+  fs::create_directories(out, ec);
+  if (ec) input_error("cannot create output folder '{}': {}", out, ec.message());
+  std::vector<double> d;
+  std::vector<std::vector<double>> shape(std::size(kSpectrumShapeKeys));
+  for (std::size_t i = 0; i < grains.meshes.size(); ++i) {
+    write_stl(grains.meshes[i], fs::path(out) / fmt::format("sh-{:04d}.stl", i + 1));
+    const ShapeMetrics s = shape_metrics(grains.meshes[i]);
+    d.push_back(s.equivalent_diameter);
+    const double values[] = {s.roundness, s.sphericity, s.elongation, s.flatness, s.convexity};
+    for (std::size_t k = 0; k < shape.size(); ++k) shape[k].push_back(values[k]);
+  }
+  fmt::print("wrote {} grains of degree {} drawn from {} ({} faces each, metres, centred, principal frame) to {} in "
+             "{:.2f} s; {} draws refused for r <= 0\n",
+             count, spectrum.degree(), spectrum_file, faces, out, seconds, grains.rejected);
+  const Stats sd = stats_of(d);
+  fmt::print("  {:<22}{:>22}{:>22}\n", "mean (std)", "generated", "spectrum's set");
+  fmt::print("  {:<22}{:>22}{:>22}\n", "d_eq (m)", fmt::format("{:.4g} ({:.3g})", sd.mean, sd.std),
+             fmt::format("{:.4g} ({:.3g})", spectrum.d_eq_mean, spectrum.d_eq_std));
+  for (std::size_t k = 0; k < shape.size(); ++k) {
+    const Stats s = stats_of(shape[k]);
+    std::string real = "-";
+    for (const auto& [key, mean] : file.shape_means) {
+      if (key == kSpectrumShapeKeys[k]) real = fmt::format("{:.3f}", mean);
+    }
+    fmt::print("  {:<22}{:>22}{:>22}\n", kSpectrumShapeKeys[k], fmt::format("{:.3f} ({:.3f})", s.mean, s.std), real);
+  }
+  for (int n : {2, 3, 5, 10, 20}) {
+    if (n > spectrum.degree()) break;
+    std::vector<double> a;
+    for (const ShCoefficients& c : grains.coefficients) a.push_back(sh_degree_amplitudes(c)[n]);
+    const Stats s = stats_of(a);
+    fmt::print("  {:<22}{:>22}{:>22}\n", fmt::format("A_{}/A_0", n), fmt::format("{:.4f} ({:.4f})", s.mean, s.std),
+               fmt::format("{:.4f} ({:.4f})", spectrum.mean[n], spectrum.std[n]));
+  }
+  return 0;
+}
 
 void add_sh_file_options(CLI::App& cmd, int& faces, ShOptions& sh) {
   cmd.add_option("--faces", faces, "triangles of the mesh of each SH file (.dat)")

@@ -34,12 +34,6 @@ void scale_to(TriMesh& mesh, double size) {
   for (Vec3& v : mesh.vertices) v *= s;
 }
 
-// Centroid to the origin, principal axes (long, intermediate, short) to x, y, z.
-void to_principal_frame(TriMesh& mesh) {
-  const PrincipalFrame f = principal_frame(mesh);
-  for (Vec3& v : mesh.vertices) v = f.axes.transpose() * (v - f.centroid);
-}
-
 std::string lower(std::string s) {
   for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   return s;
@@ -64,6 +58,11 @@ TriMesh load_grain_file(const std::filesystem::path& path, int sh_faces, const S
 }
 
 double size_of(const TriMesh& mesh) { return principal_frame(mesh).extents[1]; }
+
+void move_to_principal_frame(TriMesh& mesh) {
+  const PrincipalFrame f = principal_frame(mesh);
+  for (Vec3& v : mesh.vertices) v = f.axes.transpose() * (v - f.centroid);
+}
 
 GrainSet generate_grain_set(GrainPreset preset, int count, std::uint64_t seed, SieveRange sieve, int faces) {
   GeneratorSpec spec = preset_spec(preset);
@@ -126,7 +125,7 @@ GrainSet import_grain_set(const std::filesystem::path& folder, int face_budget, 
                                       file.filename().string(), face_budget, s.mesh.faces.size(),
                                       100 * s.volume_error));
     }
-    to_principal_frame(s.mesh);
+    move_to_principal_frame(s.mesh);
     measured.push_back(size_of(s.mesh));
     set.meshes.push_back(std::move(s.mesh));
     set.names.push_back(file.stem().string());

@@ -143,3 +143,41 @@ TEST(ShCommands, AGrainFolderOfShFilesIsAGrainSet) {
 
 }  // namespace
 }  // namespace grainlab
+
+namespace grainlab {
+namespace {
+
+TEST(ShCommands, GenerateFromASpectrumWritesTheSameGrainsForTheSameSeedAndRefusesBadUse) {
+  test::TempDir dir;
+  // A spectrum of two measured grains, as `grains spectrum` writes it.
+  write_sh_file(test::lumpy_grain(6), dir / "a.dat");
+  write_sh_file(test::lumpy_grain(6, 9), dir / "b.dat");
+  const std::string spectrum = (dir / "sand.toml").string();
+  ASSERT_EQ(grainlab(dir, "grains spectrum " + (dir / "a.dat").string() + " " + (dir / "b.dat").string() +
+                              " --faces 500 --out " + spectrum),
+            0)
+      << slurp(dir / "log.txt");
+  const std::string args = "grains generate --spectrum " + spectrum + " --count 3 --faces 300 --seed 4 --out ";
+  ASSERT_EQ(grainlab(dir, args + (dir / "one").string()), 0) << slurp(dir / "log.txt");
+  const std::string log = slurp(dir / "log.txt");
+  EXPECT_CONTAINS(log, "wrote 3 grains of degree 6 drawn from");
+  EXPECT_CONTAINS(log, "roundness");
+  ASSERT_EQ(grainlab(dir, args + (dir / "two").string()), 0);
+  for (const char* f : {"sh-0001.stl", "sh-0002.stl", "sh-0003.stl"}) {
+    EXPECT_EQ(slurp(dir / "one" / f), slurp(dir / "two" / f)) << f;
+    EXPECT_EQ(load_mesh(dir / "one" / f).faces.size(), 300u);
+  }
+  EXPECT_NE(grainlab(dir, args + (dir / "three").string() + " --preset rounded"), 0);
+  EXPECT_CONTAINS(slurp(dir / "log.txt"), "excludes");
+  EXPECT_NE(grainlab(dir, args + (dir / "three").string() + " --roundness 0.5"), 0);
+  EXPECT_NE(grainlab(dir, "grains generate --spectrum " + (dir / "none.toml").string() + " --out " +
+                              (dir / "three").string()),
+            0);
+  EXPECT_CONTAINS(slurp(dir / "log.txt"), "does not exist");
+  EXPECT_FALSE(std::filesystem::exists(dir / "three"));
+  EXPECT_NE(grainlab(dir, "grains generate --out " + (dir / "three").string()), 0);
+  EXPECT_CONTAINS(slurp(dir / "log.txt"), "needs --preset NAME or --spectrum SAND.toml");
+}
+
+}  // namespace
+}  // namespace grainlab
