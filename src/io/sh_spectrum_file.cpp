@@ -1,6 +1,7 @@
 // Spectrum files (see sh_spectrum_file.h), parsed with toml++.
 #include "io/sh_spectrum_file.h"
 
+#include "core/bounded_read.h"
 #include "core/error.h"
 
 #include <toml++/toml.h>
@@ -63,7 +64,7 @@ ShSpectrumFile read_sh_spectrum(const std::filesystem::path& path) {
   if (!std::filesystem::is_regular_file(path)) input_error("spectrum file '{}' does not exist; {}", file, kHowToMake);
   toml::table root;
   try {
-    root = toml::parse_file(file);
+    root = toml::parse(read_bounded_file(path, 4 * kMiB, "spectrum file"), file);
   } catch (const toml::parse_error& e) {
     input_error("{}:{}: TOML syntax error: {}", file, e.source().begin.line, e.description());
   }
