@@ -8,6 +8,7 @@
 #include "io/pvd_reader.h"
 #include "io/table.h"
 #include "io/vtp_reader.h"
+#include "run_grainlab.h"
 
 #include <gtest/gtest.h>
 
@@ -40,21 +41,8 @@ std::string read_file(const fs::path& p) {
   return s.str();
 }
 
-struct Result {
-  int exit_code;
-  std::string output;
-};
-
-// Runs `grainlab ARGS` in folder `cwd` (stdout and stderr together), with `env` before it.
-Result run_grainlab(const fs::path& cwd, const std::string& args, const std::string& env = "") {
-  const std::string cmd = "cd '" + cwd.string() + "' && " + env + " '" + GRAINLAB_BINARY + "' " + args + " 2>&1";
-  FILE* pipe = popen(cmd.c_str(), "r");
-  std::string out;
-  char buf[4096];
-  while (pipe && std::fgets(buf, sizeof(buf), pipe)) out += buf;
-  const int status = pipe ? pclose(pipe) : -1;
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
-}
+using Result = grainlab::testing_support::GrainlabResult;
+using grainlab::testing_support::run_grainlab;
 
 const std::vector<std::string> kAnalysisColumns = {"rotation_mean_deg", "rotation_band_deg",
                                                    "coordination_number_band", "fabric_psi",
