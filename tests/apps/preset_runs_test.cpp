@@ -18,10 +18,12 @@
 //
 // Own index void ratios: the default rounded grains' are built in and glass
 // beads' are measured by the run (5 s); sub-angular and angular grains'
-// measurement takes 20 minutes to an hour, so the config gives them: the
-// values `grainlab run` measured for these presets with the default keys
-// (one seed; docs/direct_shear.md, "Deposition friction of each grain
-// class"). Each case is its own ctest (one thread), so they run side by side.
+// measurement takes 20 minutes to an hour, so the config gives them:
+// sub-angular's as `grainlab run` measured them with the default keys (one
+// seed), angular's as bench_preparation_range measured them for the
+// crushed-limestone sand preset's grains (docs/direct_shear.md, "Reach,
+// measured"; the index preparations do not use the material's friction).
+// Each case is its own ctest (one thread), so they run side by side.
 #include "io/json.h"
 #include "lab/lab_spec.h"
 #include "lab/lab_test.h"
@@ -50,7 +52,7 @@ std::string tiny_keys(const std::string& test, const std::string& preset) {
   if (test == "direct-shear") keys += "[shear]\nfinal_strain = 0.01\n";
   if (test == "triaxial") keys += "[triaxial]\nfinal_strain = 0.01\n";
   if (test == "oedometer") keys += "[oedometer]\nstresses = [200e3]\n";
-  // Measured by `grainlab run` of test and preset alone (1 seed, 10 d_max box, 2026-12-06).
+  // The own indices of the 10 d_max index box, one seed (above).
   if (preset == "sub-angular") keys += "[specimen]\nown_e_min = 0.4020\nown_e_max = 0.6779\n";
   if (preset == "angular") keys += "[specimen]\nown_e_min = 0.468\nown_e_max = 0.758\n";
   return keys;
