@@ -6,6 +6,7 @@
 #include "io/kept_preparations.h"
 #include "io/preparation_files.h"
 #include "lab/index_densities.h"
+#include "lab/lab_registry.h"
 #include "lab/preparation_search.h"
 #include "lab/specimen_budget.h"
 
@@ -136,12 +137,13 @@ PreparedRun prepare_run(const LabSpec& spec, const fs::path& out, bool resume,
                    : fmt::format("e {:.4f}", r.target_void_ratio()));
     PreparationSearchOptions search;
     search.store = &store;
-    Preparation p = prepare_to_target(r, search, print);
+    // The trials are the test's own preparation (its box), so that the one
+    // that lands on the target is its specimen.
+    Preparation p = prepare_to_target(lab_preparation_spec(r.test, r), search, print);
     r.specimen.deposition_friction = p.friction;
     run.record["trials"] = to_json(p.trials);
-    // A test prepared in another box than the trials' prepares its own
-    // specimen again with the friction found (one more preparation).
     run.test = make_lab_test(r.test, r, std::move(p.specimen));
+    // (A registered test that cannot take the trial prepares its specimen again.)
     if (run.test->world().state.step == 0)
       fmt::print("preparing the {} specimen with deposition friction {:.4g}\n", r.test, p.friction);
   } else {

@@ -83,7 +83,7 @@ const std::array kHeadFields{
     GL_FIELD("specimen", "void_ratio", specimen.void_ratio, "if > 0: target void ratio of the whole specimen, overrides relative_density"),
     GL_FIELD("specimen", "tolerance", specimen.tolerance, "accepted |e - e_target| (void_ratio and lab-index targets)"),
     GL_FIELD("specimen", "relative_density_tolerance", specimen.relative_density_tolerance, "accepted |Dr - Dr_target| (own-index targets)"),
-    GL_FIELD("specimen", "deposition_friction", specimen.deposition_friction, "friction between grains while raining and compacting (lower: denser); -1 = chosen by bisection over trial preparations"),
+    GL_FIELD("specimen", "deposition_friction", specimen.deposition_friction, "friction between grains while raining and compacting (lower: denser); -1 = chosen by the preparation search over trial preparations, the first at the grain class's measured friction (rounded: 0.032)"),
     GL_FIELD("specimen", "from", specimen.from, "path of a specimen.bin that a run wrote in its output folder as its loading began: shear that same specimen (another material, damping or loading) instead of preparing one; \"\" = prepare"),
 
     GL_FIELD("consolidation", "normal_stress", consolidation.normal_stress, "Pa, normal stress held by the top cap (100 kPa = 100e3)"),

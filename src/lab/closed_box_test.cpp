@@ -3,18 +3,17 @@
 
 namespace grainlab {
 
-namespace {
-
-LabSpec closed_box(const LabSpec& spec) {
+LabSpec ClosedBoxTest::preparation_spec(const LabSpec& spec) {
   LabSpec p = spec;
   p.box.gap = 0;  // the halves' slabs meet: one rigid ring
   return p;
 }
 
-}  // namespace
-
 ClosedBoxTest::ClosedBoxTest(const LabSpec& spec)
-    : PreparedTest(spec, std::make_unique<SpecimenPreparation>(closed_box(spec))) {}
+    : ClosedBoxTest(spec, std::make_unique<SpecimenPreparation>(preparation_spec(spec))) {}
+
+ClosedBoxTest::ClosedBoxTest(const LabSpec& spec, std::unique_ptr<SpecimenPreparation> preparation)
+    : PreparedTest(spec, std::move(preparation)) {}
 
 bool ClosedBoxTest::prepare(int max_steps) {
   if (prep_->advance(max_steps)) return false;

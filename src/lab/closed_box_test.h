@@ -13,6 +13,12 @@ class ClosedBoxTest : public PreparedTest {
  public:
   // Builds the preparation of `spec` in the box with box.gap 0.
   explicit ClosedBoxTest(const LabSpec& spec);
+  // Goes on from `preparation`, a preparation of preparation_spec(spec)
+  // (the preparation search's trial that landed on the target).
+  ClosedBoxTest(const LabSpec& spec, std::unique_ptr<SpecimenPreparation> preparation);
+
+  // The spec the specimen is prepared with: spec's, the gap closed.
+  static LabSpec preparation_spec(const LabSpec& spec);
 
  protected:
   // Advances the preparation; true once it is prepared, the upper slabs and

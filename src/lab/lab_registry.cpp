@@ -27,6 +27,10 @@ std::vector<LabTestEntry>& entries() {
   return tests;
 }
 
+[[noreturn]] void unknown_test(const std::string& name) {
+  input_error("unknown lab test '{}': the registered tests are {}", name, fmt::join(lab_test_names(), ", "));
+}
+
 }  // namespace
 
 void register_lab_test(LabTestEntry entry) {
@@ -43,7 +47,13 @@ std::unique_ptr<LabTest> make_lab_test(const std::string& name, const LabSpec& s
                                        std::unique_ptr<SpecimenPreparation> prepared) {
   for (const LabTestEntry& e : entries())
     if (name == e.name) return e.factory(spec, std::move(prepared));
-  input_error("unknown lab test '{}': the registered tests are {}", name, fmt::join(lab_test_names(), ", "));
+  unknown_test(name);
+}
+
+LabSpec lab_preparation_spec(const std::string& name, const LabSpec& spec) {
+  for (const LabTestEntry& e : entries())
+    if (name == e.name) return e.preparation_spec ? e.preparation_spec(spec) : spec;
+  unknown_test(name);
 }
 
 std::unique_ptr<LabTest> make_lab_test(const std::string& name, const LabSpec& spec) {

@@ -27,11 +27,15 @@
 namespace grainlab {
 
 using LabTestFactory = std::unique_ptr<LabTest> (*)(const LabSpec&, std::unique_ptr<SpecimenPreparation>);
+using PreparationSpecOf = LabSpec (*)(const LabSpec&);
 
 struct LabTestEntry {
   std::string_view name;  // the config's `test` (a literal: it is kept as a view)
   LabTestFactory factory;
   LabTestKeys keys;       // its table; keys.table.test is set to `name`
+  // The spec its specimen is prepared with (the closed-box tests close the
+  // gap); null: the run's spec as it is.
+  PreparationSpecOf preparation_spec = nullptr;
 };
 
 // A test that can go on from a preparation of its spec does (make_lab_test).
@@ -42,11 +46,19 @@ std::unique_ptr<LabTest> make_registered(const LabSpec& spec, std::unique_ptr<Sp
   return std::make_unique<Test>(spec);
 }
 
-// The entry of test class Test (with its static keys()) under `name`.
+// The entry of test class Test (with its static keys(), and its static
+// preparation_spec(spec) if it prepares in another box) under `name`.
 template <typename Test>
 LabTestEntry lab_test_entry(std::string_view name) {
-  return {name, &make_registered<Test>, Test::keys()};
+  PreparationSpecOf preparation = nullptr;
+  if constexpr (requires(const LabSpec& s) { Test::preparation_spec(s); }) preparation = &Test::preparation_spec;
+  return {name, &make_registered<Test>, Test::keys(), preparation};
 }
+
+// The spec test `name` prepares its specimen with (InputError for an
+// unknown test): what the preparation search's trials use, so that the
+// trial that lands on the target is the test's own specimen.
+LabSpec lab_preparation_spec(const std::string& name, const LabSpec& spec);
 
 // Adds a test (InputError if its name or table is taken).
 void register_lab_test(LabTestEntry entry);

@@ -81,11 +81,12 @@ struct SpecimenSpec {
   double void_ratio = -1;          // if > 0: target void ratio, overrides Dr
   double tolerance = 0.02;         // accepted |e - e_target| (void ratio and lab-index targets)
   double relative_density_tolerance = 0.05;  // accepted |Dr - Dr_target| (own-index targets)
-  double deposition_friction = 0.032; // inter-grain friction while raining and compacting (lower: denser).
-                                     // 0.032 gives own Dr 0.93 with the default grains and box
-                                     // (docs/direct_shear.md, "The embedded default"); < 0: chosen by
-                                     // bisection over trial preparations (lab/preparation_search.h), for
-                                     // other grains or another target
+  double deposition_friction = -1;  // inter-grain friction while raining and compacting (lower: denser);
+                                    // -1: chosen by the preparation search (lab/preparation_search.h),
+                                    // which `grainlab run` runs, its first trial at the grain class's
+                                    // measured friction (lab/deposition_friction.h: the default rounded
+                                    // grains' 0.032 gives own Dr 0.92 in the default box); a test built
+                                    // without the search deposits at that first friction
   std::string from;  // a specimen.bin another run wrote as its loading began: start from that
                      // specimen instead of preparing one (same grains, box, seed, test, stress and
                      // density scaling; the material and the loading may differ). "" = prepare

@@ -76,7 +76,10 @@ OedometerSummary summarise_oedometer(const std::vector<std::vector<double>>& all
 }
 
 OedometerTest::OedometerTest(const LabSpec& spec)
-    : ClosedBoxTest(spec), constant_rate_(spec.settings<OedometerSpec>().loading == "constant-rate") {
+    : OedometerTest(spec, std::make_unique<SpecimenPreparation>(preparation_spec(spec))) {}
+
+OedometerTest::OedometerTest(const LabSpec& spec, std::unique_ptr<SpecimenPreparation> preparation)
+    : ClosedBoxTest(spec, std::move(preparation)), constant_rate_(spec.settings<OedometerSpec>().loading == "constant-rate") {
   // Runs after the preparation's servo, which is idle once it is done.
   world().add_controller([this](World& w, double dt) {
     if (p_.phase == OedometerPhase::Load && !constant_rate()) servo_.control(w, dt);

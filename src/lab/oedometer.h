@@ -112,6 +112,8 @@ class OedometerTest final : public ClosedBoxTest {
  public:
   // Builds the preparation (the direct shear box with its gap closed).
   explicit OedometerTest(const LabSpec& spec);
+  // Goes on from a preparation of preparation_spec(spec) (lab/closed_box_test.h).
+  OedometerTest(const LabSpec& spec, std::unique_ptr<SpecimenPreparation> preparation);
   // Its config table [oedometer] (lab/spec_keys.h).
   static LabTestKeys keys();
 

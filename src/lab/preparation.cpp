@@ -4,6 +4,7 @@
 
 #include "core/error.h"
 #include "geometry/shape_metrics.h"
+#include "lab/deposition_friction.h"
 #include "lab/packing_density.h"
 #include "lab/scanned_specimen.h"
 
@@ -68,11 +69,8 @@ SpecimenPreparation::SpecimenPreparation(const LabSpec& spec) : spec_(spec) {
                 "itself when they are missing), or set specimen.indices = \"lab\" to use the lab's "
                 "specimen.e_min/e_max, or give specimen.void_ratio",
                 spec.specimen.relative_density);
-  if (spec.specimen.deposition_friction < 0)
-    input_error("specimen.deposition_friction = {} means \"choose it by bisection\", which "
-                "lab/preparation_search.h does before the test is built (`grainlab run` does it); a "
-                "lab test built directly needs a friction >= 0",
-                spec.specimen.deposition_friction);
+  // Left to the search (-1) and built without it: the friction the search would try first.
+  spec_.specimen.deposition_friction = deposition_friction_of(spec);
   world_.settings.threads = spec.numerics.threads;  // the World's own count, set once here
   Model& m = world_.model;
   m.law = spec.material.law;

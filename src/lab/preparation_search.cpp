@@ -3,6 +3,7 @@
 
 #include "core/error.h"
 #include "core/timer.h"
+#include "lab/deposition_friction.h"
 
 #include <algorithm>
 #include <cmath>
@@ -100,14 +101,10 @@ Preparation prepare_to_target(const LabSpec& spec, const PreparationSearchOption
   double u_lo = 0, u_hi = to_u(o.max_friction);
   const double u_index = to_u(std::min(kLoosestDepositionFriction, o.max_friction));  // where e_max was measured
   std::optional<double> e_lo, e_hi;  // measured e at the bracket's ends
-  double u = 0;
-  if (spec.own_indices_known()) {
-    const auto& s = spec.specimen;
-    const double f = (target - s.own_e_min) / (s.own_e_max - s.own_e_min);
-    u = std::clamp(f, 0.05, 0.95) * u_index;
-  } else {
-    u = to_u(0.12);
-  }
+  // The first trial at exactly the friction lab/deposition_friction.h gives
+  // (a grain class's measured one is tried as it is), the next ones in u.
+  double mu = std::min(first_deposition_friction(spec), o.max_friction);
+  double u = to_u(mu);
   double best_miss = std::numeric_limits<double>::infinity();
   std::string why;
   const TrialPreparation run_trial =
@@ -120,9 +117,9 @@ Preparation prepare_to_target(const LabSpec& spec, const PreparationSearchOption
     std::unique_ptr<SpecimenPreparation> t;
     Stopwatch clock;
     try {
-      t = run_trial(spec, to_mu(u), trial);
+      t = run_trial(spec, mu, trial);
     } catch (const RunError& e) {
-      trial = PreparationTrial{to_mu(u), NAN, NAN, 0, clock.seconds(), e.what()};
+      trial = PreparationTrial{mu, NAN, NAN, 0, clock.seconds(), e.what()};
     }
     p.trials.push_back(trial);
     if (!trial.error.empty()) {
@@ -131,6 +128,7 @@ Preparation prepare_to_target(const LabSpec& spec, const PreparationSearchOption
                              trial.wall_s, trial.error));
       const double step = 0.1 * (u_hi - u_lo);
       u = u < 0.5 * (u_lo + u_hi) ? u + step : u - step;
+      mu = to_mu(u);
       continue;
     }
     if (progress)
@@ -170,6 +168,7 @@ Preparation prepare_to_target(const LabSpec& spec, const PreparationSearchOption
     } else {  // the e_max friction too: the loosest end
       u = u_max;
     }
+    mu = to_mu(u);
   }
   if (why.empty() && std::isnan(best_e))
     why = "every trial failed (each trial's error is listed): a phase did not come to rest";

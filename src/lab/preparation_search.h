@@ -14,9 +14,11 @@
 // is nearly straight), kept within the inner 80 % of the bracket so that it
 // always shrinks; an end not tried yet is bisected, the loose one in two
 // stages: up to the e_max preparation's friction (1.0), and only when that
-// is still too dense to mu_max. The first guess takes e linear in u between
-// the own indices e_min (u = 0) and e_max (u at friction 1.0) when they are
-// known, else mu = 0.12.
+// is still too dense to mu_max. The first guess is
+// first_deposition_friction (lab/deposition_friction.h): the grain class's
+// measured friction for a target at its measured Dr, else e linear in u
+// between the own indices e_min (u = 0) and e_max (u at friction 1.0) when
+// they are known, else mu = 0.12.
 // Accepted: |Dr - Dr_target| <= relative_density_tolerance on own indices
 // (bulk e), else |e - e_target| <= specimen.tolerance (whole specimen).
 // Stops with RunError (the trials, the closest, why, how to fix) when mu = 0

@@ -107,7 +107,11 @@ TriaxialSummary summarise_triaxial(const std::vector<std::vector<double>>& rows)
   return s;
 }
 
-TriaxialTest::TriaxialTest(const LabSpec& spec) : ClosedBoxTest(spec) {
+TriaxialTest::TriaxialTest(const LabSpec& spec)
+    : TriaxialTest(spec, std::make_unique<SpecimenPreparation>(preparation_spec(spec))) {}
+
+TriaxialTest::TriaxialTest(const LabSpec& spec, std::unique_ptr<SpecimenPreparation> preparation)
+    : ClosedBoxTest(spec, std::move(preparation)) {
   const double sigma3 = spec.consolidation.normal_stress;
   const double limit = prep_->servo_speed_limit();  // as the preparation's servo
   cap_servo_ = StressServo(Cap, spec.box.length * spec.box.width, sigma3, limit);

@@ -114,6 +114,8 @@ class TriaxialTest final : public ClosedBoxTest {
   static constexpr double kSideAlpha = 0.15;  // the side servos' gain (above)
 
   explicit TriaxialTest(const LabSpec& spec);
+  // Goes on from a preparation of preparation_spec(spec) (lab/closed_box_test.h).
+  TriaxialTest(const LabSpec& spec, std::unique_ptr<SpecimenPreparation> preparation);
   // Its config table [triaxial] (lab/spec_keys.h).
   static LabTestKeys keys();
 

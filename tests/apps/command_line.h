@@ -1,4 +1,5 @@
-// Shared helpers of the apps tests: run a shell command line, read a file.
+// Shared helpers of the apps tests: run a shell command line or this build's
+// grainlab binary, read a file.
 #pragma once
 
 #include <cstdio>
@@ -24,6 +25,12 @@ inline Result run_shell(const std::string& command) {
   while (pipe && std::fgets(buf, sizeof(buf), pipe)) out += buf;
   const int status = pipe ? pclose(pipe) : -1;
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+// Runs this build's `grainlab ARGS` (GRAINLAB_BINARY) in folder `cwd`, as a
+// user would, with `env` (e.g. "OMP_NUM_THREADS=1") before it.
+inline Result run_grainlab(const std::filesystem::path& cwd, const std::string& args, const std::string& env = "") {
+  return run_shell("cd '" + cwd.string() + "' && " + env + " '" + GRAINLAB_BINARY + "' " + args);
 }
 
 inline std::string read_file(const std::filesystem::path& p) {

@@ -36,11 +36,7 @@ using grainlab::Table;
 
 using apps_test::read_file;
 using apps_test::Result;
-
-// Runs `grainlab ARGS` in folder `cwd` (stdout and stderr together), with `env` before it.
-Result run_grainlab(const fs::path& cwd, const std::string& args, const std::string& env = "") {
-  return apps_test::run_shell("cd '" + cwd.string() + "' && " + env + " '" + GRAINLAB_BINARY + "' " + args);
-}
+using apps_test::run_grainlab;
 
 const std::vector<std::string> kAnalysisColumns = {"rotation_mean_deg", "rotation_band_deg",
                                                    "coordination_number_band", "fabric_psi",

@@ -1,12 +1,19 @@
 // Preparation that reaches its target (lab/preparation_search.h): a
 // specimen of spheres asked for Dr 0.2, 0.6 and 0.95 on the spheres' own
 // index void ratios lands within 0.05 of each, with the friction the search
-// chose; the search itself on a model of e(mu): failed trials, the ends.
+// chose; the search itself on a model of e(mu): failed trials, the ends;
+// and the specimen the search lands on is, bit for bit, the one a test makes
+// by itself at that friction (so a default run that the search prepares at
+// the grain class's friction is the run a fixed friction made before).
 #include "core/error.h"
 #include "lab/index_densities.h"
 #include "lab/preparation_search.h"
 #include "lab/sand_presets.h"
+#include "lab/deposition_friction.h"
+#include "lab/oedometer.h"
 #include "sphere_box.h"
+#include "state_compare.h"
+#include "tiny_box.h"
 
 #include <gtest/gtest.h>
 
@@ -172,4 +179,36 @@ TEST(PreparationSearch, EveryTrialFailingStopsWithTheTrialsAndWhy) {
     EXPECT_NE(m.find("closest e = none"), std::string::npos) << m;
   }
   EXPECT_EQ(model->calls, 4);
+}
+
+// The default friction (-1) is the search's. Its first trial at the rounded
+// grains' measured friction (0.032, lab/deposition_friction.h) lands (the
+// target and tolerance below make sure), and that specimen is the one a test
+// built without the search makes (it deposits at the same first friction),
+// bit for bit, through consolidation: the closed-box test's trial is made in
+// its own box (preparation_spec).
+TEST(PreparationSearch, TheLandingTrialIsTheSpecimenATestMakesAtThatFriction) {
+  LabSpec spec = testing_support::tiny_box_spec();
+  spec.grains.preset = "rounded";
+  spec.specimen.deposition_friction = kSearchedDepositionFriction;
+  spec.specimen.void_ratio = -1;
+  spec.specimen.own_e_min = 0.41;
+  spec.specimen.own_e_max = 0.67;
+  spec.specimen.relative_density = 0.92;
+  spec.specimen.relative_density_tolerance = 0.9;  // any packing lands: this test is about the bits
+  spec.numerics.threads = 1;
+  ASSERT_EQ(first_deposition_friction(spec), 0.032);
+  const LabSpec ring = OedometerTest::preparation_spec(spec);
+  EXPECT_EQ(ring.box.gap, 0.0);
+
+  Preparation searched = prepare_to_target(ring);
+  ASSERT_EQ(searched.trials.size(), 1u);
+  EXPECT_EQ(searched.friction, 0.032);
+  OedometerTest from_search(spec, std::move(searched.specimen));
+  OedometerTest by_itself(spec);
+  EXPECT_EQ(by_itself.preparation().spec().specimen.deposition_friction, 0.032);
+  for (LabTest* t : {static_cast<LabTest*>(&from_search), static_cast<LabTest*>(&by_itself)})
+    while (!t->loading()) t->advance(1000);  // prepared: compacted and consolidated
+  EXPECT_GT(by_itself.world().state.step, 0);
+  EXPECT_TRUE(testing_support::same_state_bits(from_search.world().state, by_itself.world().state));
 }
