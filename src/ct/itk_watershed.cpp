@@ -142,7 +142,7 @@ double median_radius(const Components& comps, const FloatImage::Pointer& height)
 }  // namespace
 
 Watershed distance_watershed(const std::vector<std::uint8_t>& mask, const std::array<std::int64_t, 3>& size, double h,
-                             const ProgressFn& progress) {
+                             const ProgressFn& progress, bool keep_distance) {
   const std::size_t n = mask.size();
   try {
     FloatImage::Pointer height = height_map(mask, size, progress);
@@ -192,6 +192,11 @@ Watershed distance_watershed(const std::vector<std::uint8_t>& mask, const std::a
     const std::uint32_t* out = ws->GetOutput()->GetBufferPointer();
     result.labels.resize(n);
     for (std::size_t i = 0; i < n; ++i) result.labels[i] = mask[i] ? out[i] : 0;
+    if (keep_distance) {
+      ws = nullptr;
+      result.distance.resize(n);
+      for (std::size_t i = 0; i < n; ++i) result.distance[i] = mask[i] ? -d[i] - 1.0f : 0.0f;
+    }
     return result;
   } catch (const itk::ExceptionObject& e) {
     throw RunError(fmt::format("the watershed failed inside ITK: {}", e.GetDescription()));

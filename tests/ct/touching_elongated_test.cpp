@@ -1,0 +1,83 @@
+// Touching elongated, dented grains (packed_phantom.h): found one to one, with their volumes.
+#include "ct/packed_phantom.h"
+#include "phantom_match.h"
+
+#include "core/timer.h"
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace grainlab::ct {
+namespace {
+
+using testing::PhantomScore;
+using testing::score_phantom;
+
+PackedPhantomSpec phantom_spec(double across, std::uint64_t seed, int grains) {
+  PackedPhantomSpec spec;
+  spec.grain_size = across;
+  spec.seed = seed;
+  spec.grains = grains;
+  spec.size = static_cast<std::int64_t>(std::ceil(across * (grains > 8 ? 6.0 : 3.8)));
+  spec.voxel_size = 25e-6 * 36 / across;
+  return spec;
+}
+
+PhantomScore segment_and_score(const PackedPhantom& ph, SegmentOptions options) {
+  options.keep_labels = true;
+  Progress quiet(false);
+  return score_phantom(ph, segment_grey(ph.volume, options, quiet));
+}
+
+// The figures of docs/ct.md: 18 grains per scan, 24 and 36 voxels across,
+// seeds 1-3, each method. Minutes, so run by hand:
+//   build/test_ct --gtest_also_run_disabled_tests --gtest_filter='*PackedPhantomFigures*'
+TEST(CtTouchingElongated, DISABLED_PackedPhantomFigures) {
+  const char* seeds_env = std::getenv("PHANTOM_SEEDS");
+  const int seeds = seeds_env ? std::atoi(seeds_env) : 3;
+  std::vector<std::pair<std::string, SegmentOptions>> methods;
+  for (double h : {0.0, 1.0}) {
+    SegmentOptions o;
+    o.h = h;
+    methods.emplace_back(h == 0 ? std::string("h-maxima, default h") : fmt::format("h-maxima, h {}", h), o);
+  }
+  for (double h : {0.5, 1.0}) {
+    for (double ratio : {0.6, 0.7, 0.8}) {
+      SegmentOptions o;
+      o.h = h;
+      o.merge_ratio = ratio;
+      methods.emplace_back(fmt::format("h {} + merge {}", h, ratio), o);
+    }
+  }
+  const char* across_env = std::getenv("PHANTOM_ACROSS");
+  std::vector<double> sizes{24.0, 36.0};
+  if (across_env) sizes = {std::atof(across_env)};
+  for (double across : sizes) {
+    std::vector<PhantomScore> total(methods.size());
+    for (int seed = 1; seed <= seeds; ++seed) {
+      Stopwatch clock;
+      const PackedPhantom ph = make_packed_phantom(phantom_spec(across, seed, 18));
+      std::printf("%g voxels, seed %d: made in %.1f s\n", across, seed, clock.seconds());
+      std::fflush(stdout);
+      for (std::size_t m = 0; m < methods.size(); ++m) {
+        clock.reset();
+        const PhantomScore s = segment_and_score(ph, methods[m].second);
+        std::printf("  %-28s %s (%.1f s)\n", methods[m].first.c_str(), s.line().c_str(), clock.seconds());
+        std::fflush(stdout);
+        total[m] += s;
+      }
+    }
+    for (std::size_t m = 0; m < methods.size(); ++m) {
+      std::printf("%g voxels, all seeds: %-28s %s\n", across, methods[m].first.c_str(), total[m].line().c_str());
+    }
+  }
+}
+
+}  // namespace
+}  // namespace grainlab::ct
