@@ -82,7 +82,7 @@ Mat3 turn(const Vec3& axis, double angle) { return Eigen::AngleAxisd(angle, axis
 
 Grain make_shape(const PackedPhantomSpec& spec, Rng& rng) {
   Grain g;
-  const double b = 0.5 * spec.grain_size * rng.uniform(0.75, 1.25);
+  const double b = 0.5 * spec.grain_size * rng.uniform(1 - spec.size_spread, 1 + spec.size_spread);
   g.semi = Vec3(b * rng.uniform(spec.aspect_min, spec.aspect_max), b, b * rng.uniform(0.75, 0.95));
   g.power = 2 + static_cast<int>(rng.uniform(0, 3));
   // The dent: on the flank (a direction across the long axis), 0.2-0.35 b deep.
@@ -156,7 +156,7 @@ PackedPhantom make_packed_phantom(const PackedPhantomSpec& spec) {
           g.centre = p.centre + mid * u;
           (overlapping(p, g) ? lo : hi) = mid;
         }
-        g.centre = p.centre + (hi - rng.uniform(-0.5, 2.0)) * u;
+        g.centre = p.centre + (hi - rng.uniform(-0.5, spec.press_max)) * u;
         if (!in_image(g) || !clear_of_others(g, static_cast<int>(grains.size()) - 1)) continue;
       }
       grains.push_back(g);

@@ -33,6 +33,8 @@ struct PackedPhantomSpec {
   int grains = 18;
   double grain_size = 36;      // voxels: intermediate dimension 2b (+-15 %)
   double aspect_min = 1.5, aspect_max = 2.5;  // a / b
+  double size_spread = 0.15;   // 2b uniform in grain_size (1 +- size_spread)
+  double press_max = 1.0;      // voxels: the most a touching grain is pressed into its partner
   std::uint64_t seed = 1;
   double blur = 1.0;           // voxels: Gaussian standard deviation
   double noise = 0.04;         // standard deviation, fraction of solid - pore

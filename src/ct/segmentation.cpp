@@ -25,6 +25,10 @@ void validate(const SegmentOptions& o) {
   if (!(o.h >= 0 && std::isfinite(o.h))) {
     input_error("--h {} must be 0 or more voxels (0, the default, chooses it from the grains' size)", o.h);
   }
+  if (!(o.merge_ratio >= 0 && o.merge_ratio <= 1)) {
+    input_error("--merge-ratio {} must be 0 (no merging) to 1 (merge only where a boundary is as thick as the grain)",
+                o.merge_ratio);
+  }
   if (o.min_voxels < 1) input_error("--min-voxels {} must be at least 1", o.min_voxels);
   if (o.meshing.faces < 20) input_error("--faces {} must be at least 20", o.meshing.faces);
   if (o.meshing.smooth_iterations < 0) input_error("--smooth {} must be 0 or more", o.meshing.smooth_iterations);
@@ -192,7 +196,7 @@ Segmentation segment_grey(const GreyVolume& grey, const SegmentOptions& options,
   labels.copy_grid(grey);
   itk_bridge::Watershed split =
       itk_bridge::distance_watershed(mask.values, grey.size, options.h, [&](double f) { progress.report(f); },
-                                     options.merge_ratio > 0);
+                                     options.merge_ratio > 0 ? kOverSplitDepth : 0.0);
   labels.values = std::move(split.labels);
   if (options.merge_ratio > 0) {
     result.merged_regions = merge_over_split_regions(labels.values, labels.size, split.distance, options.merge_ratio);
