@@ -7,14 +7,14 @@
 
 namespace grainlab::ct {
 
-int merge_over_split_regions(std::vector<std::uint32_t>& labels, const Size3& size,
-                             const std::vector<float>& distance, double ratio) {
+RegionGraph region_graph(const std::vector<std::uint32_t>& labels, const Size3& size,
+                         const std::vector<float>& distance) {
   const std::uint32_t top = labels.empty() ? 0 : *std::max_element(labels.begin(), labels.end());
-  std::vector<float> radius(static_cast<std::size_t>(top) + 1, 0.0f);
-  for (std::size_t i = 0; i < labels.size(); ++i) radius[labels[i]] = std::max(radius[labels[i]], distance[i]);
-
-  // Saddle of every boundary, over the face pairs along x, y and z.
-  std::map<std::pair<std::uint32_t, std::uint32_t>, float> saddle;
+  RegionGraph g;
+  g.radius.assign(static_cast<std::size_t>(top) + 1, 0.0f);
+  for (std::size_t i = 0; i < labels.size(); ++i) g.radius[labels[i]] = std::max(g.radius[labels[i]], distance[i]);
+  // Every boundary, over the face pairs along x, y and z.
+  std::map<std::pair<std::uint32_t, std::uint32_t>, RegionBoundary> found;
   const std::int64_t nx = size[0], ny = size[1], nz = size[2];
   const std::int64_t step[3] = {1, nx, nx * ny};
   for (std::int64_t k = 0; k < nz; ++k) {
@@ -29,13 +29,23 @@ int merge_over_split_regions(std::vector<std::uint32_t>& labels, const Size3& si
           const std::size_t q = p + static_cast<std::size_t>(step[ax]);
           const std::uint32_t b = labels[q];
           if (!b || b == a) continue;
-          float& s = saddle[{std::min(a, b), std::max(a, b)}];
-          s = std::max(s, std::min(distance[p], distance[q]));
+          RegionBoundary& r = found[{std::min(a, b), std::max(a, b)}];
+          r.a = std::min(a, b);
+          r.b = std::max(a, b);
+          ++r.faces;
+          r.saddle = std::max(r.saddle, std::min(distance[p], distance[q]));
         }
       }
     }
   }
+  for (const auto& [key, r] : found) g.boundaries.push_back(r);
+  return g;
+}
 
+int merge_over_split_regions(std::vector<std::uint32_t>& labels, const Size3& size,
+                             const std::vector<float>& distance, double ratio) {
+  const RegionGraph graph = region_graph(labels, size, distance);
+  std::vector<float> radius = graph.radius;
   std::vector<std::uint32_t> parent(radius.size());
   std::iota(parent.begin(), parent.end(), 0u);
   auto root = [&](std::uint32_t x) {
@@ -45,17 +55,19 @@ int merge_over_split_regions(std::vector<std::uint32_t>& labels, const Size3& si
   int merges = 0;
   for (;;) {
     // The boundaries between the current regions, and the most grain-like one.
-    std::map<std::pair<std::uint32_t, std::uint32_t>, float> current;
-    for (const auto& [key, s] : saddle) {
-      const std::uint32_t a = root(key.first), b = root(key.second);
+    std::map<std::pair<std::uint32_t, std::uint32_t>, RegionBoundary> current;
+    for (const RegionBoundary& r : graph.boundaries) {
+      const std::uint32_t a = root(r.a), b = root(r.b);
       if (a == b) continue;
-      float& c = current[{std::min(a, b), std::max(a, b)}];
-      c = std::max(c, s);
+      RegionBoundary& c = current[{std::min(a, b), std::max(a, b)}];
+      c.saddle = std::max(c.saddle, r.saddle);
+      c.faces += r.faces;
     }
     double best = -1;
     std::pair<std::uint32_t, std::uint32_t> pick{0, 0};
-    for (const auto& [key, s] : current) {
-      const double score = s / std::max(1e-6f, std::min(radius[key.first], radius[key.second]));
+    for (const auto& [key, c] : current) {
+      const double r = std::max(1e-6f, std::min(radius[key.first], radius[key.second]));
+      const double score = c.saddle / r;
       if (score > best) {
         best = score;
         pick = key;

@@ -3,11 +3,17 @@
 #include "phantom_match.h"
 
 #include "core/timer.h"
+#include "ct/itk_bridge.h"
+#include "ct/neck_merge.h"
+#include "ct/otsu.h"
+#include "ct/regions.h"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
+#include <map>
 #include <cstdlib>
 #include <string>
 #include <utility>
@@ -128,6 +134,40 @@ TEST(CtTouchingElongated, DISABLED_SmallProbe) {
       std::printf("%g seed %d: default h %s | low h %s | merge %s\n", across, seed,
                   segment_and_score(ph, plain).line().c_str(), segment_and_score(ph, low).line().c_str(),
                   segment_and_score(ph, merged).line().c_str());
+      std::fflush(stdout);
+    }
+  }
+}
+
+// Probe: every boundary of the 0.5-deep over-split, with its saddle ratio,
+// its area over the smaller region's inscribed disc, and whether it lies
+// inside one true grain (same) or between two (contact).
+TEST(CtTouchingElongated, DISABLED_BoundaryProbe) {
+  for (double across : {24.0, 36.0}) {
+    for (int seed = 1; seed <= 4; ++seed) {
+      PackedPhantomSpec spec = phantom_spec(across, seed, 8);
+      spec.size_spread = 0.3;
+      spec.press_max = 2.5;
+      const PackedPhantom ph = make_packed_phantom(spec);
+      MaskVolume mask = threshold_mask(ph.volume, otsu_threshold(ph.volume.values).threshold);
+      fill_small_pores(mask, 100);
+      const itk_bridge::Watershed ws = itk_bridge::distance_watershed(mask.values, mask.size, 0, nullptr, kOverSplitDepth);
+      const RegionGraph g = region_graph(ws.labels, mask.size, ws.distance);
+      std::map<std::pair<std::uint32_t, std::uint32_t>, std::int64_t> overlap;
+      for (std::size_t i = 0; i < ws.labels.size(); ++i) {
+        if (ws.labels[i] && ph.truth.values[i]) ++overlap[{ws.labels[i], ph.truth.values[i]}];
+      }
+      std::vector<std::uint32_t> owner(g.radius.size(), 0);
+      std::vector<std::int64_t> most(g.radius.size(), 0);
+      for (const auto& [key, c] : overlap) {
+        if (c > most[key.first]) most[key.first] = c, owner[key.first] = key.second;
+      }
+      for (const RegionBoundary& b : g.boundaries) {
+        const double r = std::min(g.radius[b.a], g.radius[b.b]);
+        std::printf("%g %d %s ratio %.3f area %.3f r %.1f %.1f\n", across, seed,
+                    owner[b.a] == owner[b.b] ? "same   " : "contact", b.saddle / r, b.faces / (M_PI * r * r),
+                    g.radius[b.a], g.radius[b.b]);
+      }
       std::fflush(stdout);
     }
   }
