@@ -85,15 +85,17 @@ TEST(CtTouchingElongated, DISABLED_PackedPhantomFigures) {
   }
 }
 
-// Eight grains 24 voxels across, sizes +-30 %, pressed up to 2.5 voxels
-// (seed 2): h-maxima at the default depth merges two pairs, at the merge
-// step's depth 0.5 splits two grains, and the merge step brings them back.
-PackedPhantom small_hard_phantom() {
-  PackedPhantomSpec spec = phantom_spec(24, 2, 8);
+// Eight grains, sizes +-30 %, pressed up to 2.5 voxels. At 24 voxels across,
+// seed 2 (the tests' scan): h-maxima at the default depth merges two pairs,
+// at the merge step's depth 0.5 splits two grains, and the merge step
+// brings them back.
+PackedPhantom hard_phantom(double across, std::uint64_t seed) {
+  PackedPhantomSpec spec = phantom_spec(across, seed, 8);
   spec.size_spread = 0.3;
   spec.press_max = 2.5;
   return make_packed_phantom(spec);
 }
+PackedPhantom small_hard_phantom() { return hard_phantom(24, 2); }
 
 TEST(CtTouchingElongated, TheMergeStepFindsTouchingElongatedGrainsOneToOne) {
   const PackedPhantom ph = small_hard_phantom();
@@ -123,10 +125,7 @@ TEST(CtTouchingElongated, WithoutTheMergeStepGrainsAreSplitOrMerged) {
 TEST(CtTouchingElongated, DISABLED_SmallProbe) {
   for (double across : {24.0, 36.0}) {
     for (int seed = 1; seed <= 4; ++seed) {
-      PackedPhantomSpec spec = phantom_spec(across, seed, 8);
-      spec.size_spread = 0.3;
-      spec.press_max = 2.5;
-      const PackedPhantom ph = make_packed_phantom(spec);
+      const PackedPhantom ph = hard_phantom(across, seed);
       SegmentOptions plain, low, merged;
       plain.merge_ratio = 0;
       low.merge_ratio = 0;
@@ -145,10 +144,7 @@ TEST(CtTouchingElongated, DISABLED_SmallProbe) {
 TEST(CtTouchingElongated, DISABLED_BoundaryProbe) {
   for (double across : {24.0, 36.0}) {
     for (int seed = 1; seed <= 4; ++seed) {
-      PackedPhantomSpec spec = phantom_spec(across, seed, 8);
-      spec.size_spread = 0.3;
-      spec.press_max = 2.5;
-      const PackedPhantom ph = make_packed_phantom(spec);
+      const PackedPhantom ph = hard_phantom(across, seed);
       MaskVolume mask = threshold_mask(ph.volume, otsu_threshold(ph.volume.values).threshold);
       fill_small_pores(mask, 100);
       const itk_bridge::Watershed ws = itk_bridge::distance_watershed(mask.values, mask.size, 0, nullptr, kOverSplitDepth);
