@@ -44,7 +44,8 @@ PhantomScore segment_and_score(const PackedPhantom& ph, SegmentOptions options) 
 }
 
 // The figures of docs/ct.md: 18 grains per scan, 24 and 36 voxels across,
-// seeds 1-3, each method. Minutes, so run by hand:
+// seeds 1-3 (PHANTOM_FIRST_SEED, PHANTOM_SEEDS), each method; sizes
+// PHANTOM_ACROSS, spread and press PHANTOM_SPREAD and PHANTOM_PRESS. Minutes, so run by hand:
 //   build/test_ct --gtest_also_run_disabled_tests --gtest_filter='*PackedPhantomFigures*'
 TEST(CtTouchingElongated, DISABLED_PackedPhantomFigures) {
   const char* seeds_env = std::getenv("PHANTOM_SEEDS");
@@ -66,7 +67,9 @@ TEST(CtTouchingElongated, DISABLED_PackedPhantomFigures) {
   if (across_env) sizes = {std::atof(across_env)};
   for (double across : sizes) {
     std::vector<PhantomScore> total(methods.size());
-    for (int seed = 1; seed <= seeds; ++seed) {
+    const char* first_env = std::getenv("PHANTOM_FIRST_SEED");
+    const int first = first_env ? std::atoi(first_env) : 1;
+    for (int seed = first; seed < first + seeds; ++seed) {
       Stopwatch clock;
       const PackedPhantom ph = make_packed_phantom(phantom_spec(across, seed, 18));
       std::printf("%g voxels, seed %d: made in %.1f s\n", across, seed, clock.seconds());
