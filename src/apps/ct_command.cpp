@@ -80,6 +80,10 @@ int run_segment(const SegmentArgs& a) {
                s.filled_voxels, s.h,
                options.h == 0 ? fmt::format("a fifth of the median inscribed radius, {:.1f} voxels", s.typical_radius)
                               : std::string("--h"));
+    if (!a.quiet && options.merge_ratio > 0) {
+      fmt::print(stderr, "ct: split with hills {} voxel deep, {} regions merged back (--merge-ratio {})\n",
+                 ct::kOverSplitDepth, s.merged_regions, options.merge_ratio);
+    }
   }
   ct::write_segmentation(s, a.out, a.force, a.format);
   int border = 0, over_budget = 0, pieces = 0, merges = 0, splits = 0;
@@ -214,7 +218,16 @@ Command add_ct_command(CLI::App& app) {
                 "h-maxima depth in voxels: touching grains are split when each one's inscribed radius exceeds the "
                 "contact neck's by more than h; larger h merges more (dented grains stay whole), smaller splits more. "
                 "0: a fifth of the grains' median inscribed radius (at least 1 voxel), which suits 14 to 72 voxels "
-                "across; give it for a wide grading (small grains against large ones) and check grains.csv")
+                "across; give it for a wide grading (small grains against large ones) and check grains.csv. With the merge "
+                "step (--merge-ratio above 0, the default) the markers are 0.5 voxel deep and h serves only the quality "
+                "table's distance maxima")
+      ->capture_default_str();
+  s->add_option("--merge-ratio", seg->options.merge_ratio,
+                "split with hills 0.5 voxel deep, then merge two touching regions back into one grain when the "
+                "thickest ball through their shared boundary has at least this fraction of the smaller region's "
+                "inscribed radius (a cut through one grain; a contact between grains is a much thinner neck). "
+                "Finds touching elongated grains that h-maxima alone merges. 0: h-maxima at depth --h alone")
+      ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str();
   s->add_option("--threads", seg->options.threads, "worker threads meshing the grains (0 = all cores)")
       ->check(CLI::NonNegativeNumber)

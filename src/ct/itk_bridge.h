@@ -81,10 +81,14 @@ struct Watershed {
   std::vector<std::uint32_t> labels;  // 1..n (0 = pore), in no particular order
   double h = 0;                       // the depth used (voxels)
   double typical_radius = 0;          // r_typ (voxels) when h was chosen from the scan, else 0
+  std::vector<float> distance;        // with over_split_h > 0: distance to the pore (voxels), 0 in the pore
 };
 
+// over_split_h > 0: the markers are the hills deeper than over_split_h instead
+// of h (an over-split for neck_merge.h to merge back; h is still chosen and
+// reported as above) and the distance map is kept.
 Watershed distance_watershed(const std::vector<std::uint8_t>& mask, const std::array<std::int64_t, 3>& size, double h,
-                             const ProgressFn& progress);
+                             const ProgressFn& progress, double over_split_h = 0);
 
 // One grain's hills in the distance map of `mask` (1 = the grain, 0 = anything
 // else; give it a margin of pore): its largest inscribed radius (voxels) and,

@@ -142,7 +142,7 @@ double median_radius(const Components& comps, const FloatImage::Pointer& height)
 }  // namespace
 
 Watershed distance_watershed(const std::vector<std::uint8_t>& mask, const std::array<std::int64_t, 3>& size, double h,
-                             const ProgressFn& progress) {
+                             const ProgressFn& progress, double over_split_h) {
   const std::size_t n = mask.size();
   try {
     FloatImage::Pointer height = height_map(mask, size, progress);
@@ -159,7 +159,7 @@ Watershed distance_watershed(const std::vector<std::uint8_t>& mask, const std::a
     }
 
     // Markers: regional maxima of the h-maxima reconstruction, one label each.
-    Markers markers = markers_at(height, result.h, progress, 0.25, 0.55);
+    Markers markers = markers_at(height, over_split_h > 0 ? over_split_h : result.h, progress, 0.25, 0.55);
     std::uint32_t marker_count = markers.count;
     std::uint32_t* mk = markers.image->GetBufferPointer();
     for (std::size_t i = 0; i < n; ++i) {
@@ -192,6 +192,11 @@ Watershed distance_watershed(const std::vector<std::uint8_t>& mask, const std::a
     const std::uint32_t* out = ws->GetOutput()->GetBufferPointer();
     result.labels.resize(n);
     for (std::size_t i = 0; i < n; ++i) result.labels[i] = mask[i] ? out[i] : 0;
+    if (over_split_h > 0) {
+      ws = nullptr;
+      result.distance.resize(n);
+      for (std::size_t i = 0; i < n; ++i) result.distance[i] = mask[i] ? -d[i] - 1.0f : 0.0f;
+    }
     return result;
   } catch (const itk::ExceptionObject& e) {
     throw RunError(fmt::format("the watershed failed inside ITK: {}", e.GetDescription()));

@@ -3,6 +3,7 @@
 #include "core/error.h"
 #include "core/parallel.h"
 #include "ct/itk_bridge.h"
+#include "ct/neck_merge.h"
 #include "ct/otsu.h"
 #include "ct/regions.h"
 #include "geometry/convex_hull.h"
@@ -23,6 +24,10 @@ namespace grainlab::ct {
 void validate(const SegmentOptions& o) {
   if (!(o.h >= 0 && std::isfinite(o.h))) {
     input_error("--h {} must be 0 or more voxels (0, the default, chooses it from the grains' size)", o.h);
+  }
+  if (!(o.merge_ratio >= 0 && o.merge_ratio <= 1)) {
+    input_error("--merge-ratio {} must be 0 (no merging) to 1 (merge only where a boundary is as thick as the grain)",
+                o.merge_ratio);
   }
   if (o.min_voxels < 1) input_error("--min-voxels {} must be at least 1", o.min_voxels);
   if (o.meshing.faces < 20) input_error("--faces {} must be at least 20", o.meshing.faces);
@@ -135,6 +140,7 @@ void mesh_and_measure(LabelVolume& labels, const std::optional<GreyField>& grey,
   result.quality_h = assess_grains(labels, regions, result.from_labels ? options.h : result.h, quality);
   for (std::size_t i = 0; i < quality.size(); ++i) result.grains[i].quality = quality[i];
   progress.finish();
+  if (options.keep_labels) result.labels = std::move(labels);
 }
 
 }  // namespace
@@ -189,8 +195,12 @@ Segmentation segment_grey(const GreyVolume& grey, const SegmentOptions& options,
   LabelVolume labels;
   labels.copy_grid(grey);
   itk_bridge::Watershed split =
-      itk_bridge::distance_watershed(mask.values, grey.size, options.h, [&](double f) { progress.report(f); });
+      itk_bridge::distance_watershed(mask.values, grey.size, options.h, [&](double f) { progress.report(f); },
+                                     options.merge_ratio > 0 ? kOverSplitDepth : 0.0);
   labels.values = std::move(split.labels);
+  if (options.merge_ratio > 0) {
+    result.merged_regions = merge_over_split_regions(labels.values, labels.size, split.distance, options.merge_ratio);
+  }
   result.h = split.h;
   result.typical_radius = split.typical_radius;
   mask.values = {};

@@ -98,7 +98,7 @@ TEST(CtSegmentation, AtSeventyTwoVoxelsAcrossConcaveRoundnessIsWithin005) {
   check_scene(make_synthetic_scene(spec), true, true, roundness_tolerance_72_voxels);
 }
 
-// The watershed's depth chosen from the grains' size (h = 0, the default):
+// The watershed's depth chosen from the grains' size (h = 0, the default), without the merge step:
 // small grains (14 voxels across) that a fixed depth of 2 voxels merges into
 // one (a touching pair's neck is within 2 voxels of the smaller grain's
 // inscribed radius here) come out one by one: their median inscribed radius
@@ -112,16 +112,22 @@ TEST(CtSegmentation, TheDefaultDepthScalesWithTheGrainsAndSplitsSmallTouchingGra
   spec.seed = 2;
   const SyntheticScene scene = make_synthetic_scene(spec);
   Progress quiet(false);
+  // h-maxima alone (the merge step off): the depth is what is tested here.
   SegmentOptions fixed;
   fixed.h = 2;
+  fixed.merge_ratio = 0;
   EXPECT_LT(segment_grey(scene.volume, fixed, quiet).grains.size(), scene.grains.size())
       << "this scan no longer tells the depths apart";
-  const Segmentation seg = segment_grey(scene.volume, SegmentOptions{}, quiet);
+  SegmentOptions depth_only;
+  depth_only.merge_ratio = 0;
+  const Segmentation seg = segment_grey(scene.volume, depth_only, quiet);
   EXPECT_NEAR(seg.typical_radius, 0.26 * spec.grain_size, 1.0);
   EXPECT_DOUBLE_EQ(seg.h, std::max(1.0, 0.2 * seg.typical_radius));
   ASSERT_EQ(seg.grains.size(), scene.grains.size()) << "a grain was merged, split or lost at h = " << seg.h;
   const std::vector<int> match = match_grains(scene, seg);
   EXPECT_EQ(std::set<int>(match.begin(), match.end()).size(), match.size()) << "two true grains matched one";
+  EXPECT_EQ(segment_grey(scene.volume, SegmentOptions{}, quiet).grains.size(), scene.grains.size())
+      << "the merge step (the default) merged, split or lost a grain";
 }
 
 // The larger scan of docs/ct.md (256^3, 60 grains of 30 voxels, 10 touching
