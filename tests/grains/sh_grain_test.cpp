@@ -161,7 +161,7 @@ TEST(ShGrain, BadFilesAreRefusedNamingFileAndLine) {
   EXPECT_CONTAINS(e, "theta = 1");  // near the south pole: theta between 100 and 180 deg
 
   EXPECT_CONTAINS(refusal({}), "holds no coefficient line");
-  EXPECT_CONTAINS(test::input_error_of([] { read_sh_file("/nonexistent/x.dat"); }), "cannot read");
+  EXPECT_CONTAINS(test::input_error_of([] { read_sh_file("/nonexistent/x.dat"); }), "cannot open spherical-harmonic file");
 }
 
 }  // namespace
