@@ -169,10 +169,10 @@ int main(int argc, char** argv) {
         piece_fill.push_back(100 * d.excess());
         Model m;
         const Shape& hs = m.shapes[m.add_mesh_shape(meshes.back(), "h")];
-        hull_kb.push_back(hs.hull.memory_bytes() / 1024.0);
+        hull_kb.push_back(hs.geometry_as<ConvexPolytope>().memory_bytes() / 1024.0);
         const Shape& cs = m.shapes[m.add_concave_shape(meshes.back(), d, "c")];
         double kb = 0;
-        for (const CompoundPiece& p : cs.compound.pieces) kb += p.hull.memory_bytes() / 1024.0;
+        for (const CompoundPiece& p : cs.geometry_as<CompoundShape>().pieces) kb += p.hull.memory_bytes() / 1024.0;
         piece_kb.push_back(kb);
       }
       Rng rng(7);

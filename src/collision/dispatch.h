@@ -6,10 +6,14 @@
 // collision_driver.h) asks the table and never names a kind. A pair
 // registered only as (B, A) is served by that routine with the shapes
 // swapped and the normals flipped. Normals of the results point from a to b.
+// A program may add a kind and its routines at run time
+// (register_shape_kind, register_pair_routine), before it steps a World.
 #pragma once
 
 #include "collision/narrowphase.h"
 #include "collision/posed_shape.h"
+
+#include <string>
 
 namespace grainlab {
 
@@ -49,6 +53,19 @@ struct PairNeeds {
 // What the pair of kinds (a, b) needs; all false / null where no routine is
 // registered.
 const PairNeeds& pair_needs(ShapeKind a, ShapeKind b);
+
+// A new shape kind, for a program that brings its own (tests/dynamics/
+// ellipsoid_kind_test.cpp): the next free id, up to kMaxShapeKinds (else
+// std::length_error). `name` is used in messages.
+ShapeKind register_shape_kind(const std::string& name);
+// Registers `fn` for the pair of kinds (a, b) with its needs; it then also
+// serves (b, a), flipped, unless (b, a) has a routine of its own. Call before
+// any World steps: the table is read without a lock.
+void register_pair_routine(ShapeKind a, ShapeKind b, PairRoutine fn, PairNeeds needs);
+// Kinds known so far: the built-in ones, then the registered ones.
+int shape_kind_count();
+// The name of a kind ("sphere", ...).
+std::string shape_kind_name(ShapeKind k);
 
 // A shape of a compact pair: its centre and its radius (PosedShape::pos and
 // ::radius), side by side.

@@ -1,14 +1,13 @@
 // What the shape-pair table (dispatch.h) works on: a shape of any kind placed
 // in the world, the per-pair warm-start cache, and the contacts a routine
 // writes. World builds these from its Model and State without looking at the
-// kind; the routine registered for the pair of kinds reads the fields its
-// kinds use.
+// kind: the pose is common to every kind, and what a kind has of its own
+// (a polytope's hull, a compound's pieces, a box's half extents) is behind
+// one pointer that only the routines registered for the kind read.
 #pragma once
 
-#include "collision/compound.h"
 #include "collision/contact_result.h"
 #include "collision/shape_kind.h"
-#include "collision/shapes.h"
 #include "collision/simplex_cache.h"
 #include "core/types.h"
 
@@ -19,14 +18,21 @@ namespace grainlab {
 // A shape in the world: p_world = pos + rot * (scale * p_local).
 struct PosedShape {
   ShapeKind kind = ShapeKind::Sphere;
-  const ConvexPolytope* hull = nullptr;  // Polytope: the hull in the local frame
-  const CompoundShape* compound = nullptr;  // Compound: its pieces
-  double radius = 0;                     // Sphere: radius in the world (m)
-  Vec3 half = Vec3::Zero();              // Box: half extents (m)
-  const Mat3* rot = nullptr;             // local-to-world rotation (Polytope, Box)
-  const Quat* q = nullptr;               // the same rotation as a quaternion (Plane: normal = q * z)
-  Vec3 pos = Vec3::Zero();               // centre of mass / wall point (m)
-  double scale = 1;                      // Polytope: uniform scale
+  // The kind's own geometry in its local frame at scale 1 (shape_kind.h says
+  // its type; null for a kind that has none), shared, never owned here.
+  const void* geometry = nullptr;
+  double radius = 0;          // the body's radius (m): a sphere's; else its volume-equivalent radius
+  const Mat3* rot = nullptr;  // local-to-world rotation
+  const Quat* q = nullptr;    // the same rotation as a quaternion (Plane: normal = q * z)
+  Vec3 pos = Vec3::Zero();    // centre of mass / wall point (m)
+  double scale = 1;           // uniform scale of the local geometry
+
+  // The geometry as the kind's type T, for the kind's own routines (which
+  // are registered only for kinds whose geometry is a T).
+  template <class T>
+  const T& geometry_as() const {
+    return *static_cast<const T*>(geometry);
+  }
 };
 
 // Warm-start data of one candidate pair, kept from step to step while the

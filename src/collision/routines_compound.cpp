@@ -28,6 +28,7 @@
 // below the smallest over piece j of B (exact for any n; n is the pair's
 // deepest normal from the last step, kept in its PairCache, else the line
 // between the centres). Skipping only separated pairs changes no contact.
+#include "collision/compound.h"
 #include "collision/dispatch.h"
 #include "collision/pair_routines.h"
 
@@ -42,7 +43,7 @@ namespace {
 PosedShape pose_piece(const PosedShape& c, const CompoundPiece& p) {
   PosedShape s;
   s.kind = p.kind;
-  s.hull = &p.hull;
+  s.geometry = &p.hull;  // a sphere piece reads none
   s.radius = p.radius * c.scale;
   s.rot = c.rot;
   s.q = c.q;
@@ -59,14 +60,14 @@ double piece_bound(const PosedShape& c, const CompoundPiece& p) {
 // World radius of a posed compound's bounding sphere about its origin.
 double compound_bound(const PosedShape& c) {
   double r = 0;
-  for (const CompoundPiece& p : c.compound->pieces) r = std::max(r, c.scale * p.offset.norm() + piece_bound(c, p));
+  for (const CompoundPiece& p : c.geometry_as<CompoundShape>().pieces) r = std::max(r, c.scale * p.offset.norm() + piece_bound(c, p));
   return r;
 }
 
 // Bounding radius of a convex posed shape about pos; infinite for walls.
 double shape_bound(const PosedShape& s) {
   if (s.kind == ShapeKind::Sphere) return s.radius;
-  if (s.kind == ShapeKind::Polytope) return s.hull->bounding_radius() * s.scale;
+  if (s.kind == ShapeKind::Polytope) return s.geometry_as<ConvexPolytope>().bounding_radius() * s.scale;
   return std::numeric_limits<double>::infinity();
 }
 
@@ -75,7 +76,8 @@ double support_value(const PosedShape& s, const Vec3& d) {
   if (s.kind == ShapeKind::Sphere) return d.dot(s.pos) + s.radius;
   if (s.kind == ShapeKind::Polytope) {
     const Vec3 local = s.rot->transpose() * d;
-    return d.dot(s.pos) + s.scale * local.dot(s.hull->vertex(s.hull->support_index(local, 0)));
+    const ConvexPolytope& hull = s.geometry_as<ConvexPolytope>();
+    return d.dot(s.pos) + s.scale * local.dot(hull.vertex(hull.support_index(local, 0)));
   }
   return std::numeric_limits<double>::infinity();
 }
@@ -182,7 +184,7 @@ void skipped(PairCache* pieces, std::size_t k) {
 
 int piece_pairs(const PosedShape& a, const PosedShape& b) {
   const auto pieces = [](const PosedShape& s) {
-    return s.kind == ShapeKind::Compound ? static_cast<int>(s.compound->pieces.size()) : 1;
+    return s.kind == ShapeKind::Compound ? static_cast<int>(s.geometry_as<CompoundShape>().pieces.size()) : 1;
   };
   return pieces(a) * pieces(b);
 }
@@ -190,7 +192,7 @@ int piece_pairs(const PosedShape& a, const PosedShape& b) {
 int any_compound(const PosedShape& a, const PosedShape& b, PairCache& cache, PairCache* pieces, SubContact* out) {
   int n = 0;
   double size[kMaxSubContacts];
-  const auto& pb = b.compound->pieces;
+  const auto& pb = b.geometry_as<CompoundShape>().pieces;
   const double ra = shape_bound(a);
   const Vec3 dir = pair_direction(a, b, cache);
   const double top_a = support_value(a, dir);
@@ -213,8 +215,8 @@ int compound_compound(const PosedShape& a, const PosedShape& b, PairCache& cache
                       SubContact* out) {
   int n = 0;
   double size[kMaxSubContacts];
-  const auto& pa = a.compound->pieces;
-  const auto& pb = b.compound->pieces;
+  const auto& pa = a.geometry_as<CompoundShape>().pieces;
+  const auto& pb = b.geometry_as<CompoundShape>().pieces;
   const double rb = compound_bound(b);
   const Vec3 dir = pair_direction(a, b, cache);
   // The lowest point of each piece of B along dir.

@@ -14,15 +14,15 @@ int sphere_sphere(const PosedShape& a, const PosedShape& b, PairCache&, PairCach
 }
 
 int sphere_polytope(const PosedShape& a, const PosedShape& b, PairCache& c, PairCache*, SubContact* out) {
-  PolytopeShape pb{b.hull, *b.rot, b.pos, b.scale, c.hint_b};
+  PolytopeShape pb{&b.geometry_as<ConvexPolytope>(), *b.rot, b.pos, b.scale, c.hint_b};
   out[0] = {collide_convex(SphereShape{a.pos, a.radius}, pb, c.dir), 0};
   c.hint_b = pb.hint;
   return 1;
 }
 
 int polytope_polytope(const PosedShape& a, const PosedShape& b, PairCache& c, PairCache*, SubContact* out) {
-  PolytopeShape pa{a.hull, *a.rot, a.pos, a.scale, c.hint_a};
-  PolytopeShape pb{b.hull, *b.rot, b.pos, b.scale, c.hint_b};
+  PolytopeShape pa{&a.geometry_as<ConvexPolytope>(), *a.rot, a.pos, a.scale, c.hint_a};
+  PolytopeShape pb{&b.geometry_as<ConvexPolytope>(), *b.rot, b.pos, b.scale, c.hint_b};
   out[0] = {collide_convex(pa, pb, c.dir, c.warm, &c.simplex), 0};
   c.hint_a = pa.hint;
   c.hint_b = pb.hint;

@@ -14,7 +14,7 @@ WallBound wall_bound(const PosedShape& wall) {
       b.normal = *wall.q * Vec3::UnitZ();
       return b;
     case ShapeKind::Box: {
-      const Vec3 ext = wall.rot->cwiseAbs() * wall.half;
+      const Vec3 ext = wall.rot->cwiseAbs() * wall.geometry_as<Vec3>();  // half extents
       b.box = {wall.pos - ext, wall.pos + ext};
       return b;
     }

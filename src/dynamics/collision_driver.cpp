@@ -53,7 +53,7 @@ std::size_t first_contact_of(const std::vector<Contact>& contacts, Index a, Inde
 }  // namespace
 
 void CollisionDriver::ask_table(const Model& model) {
-  std::array<bool, kShapeKindCount> grain{}, wall{};  // the kinds the model has
+  std::array<bool, kMaxShapeKinds> grain{}, wall{};  // the kinds the model has
   for (const Shape& sh : model.shapes) grain[static_cast<int>(sh.kind)] = true;
   for (const WallModel& w : model.walls) wall[static_cast<int>(w.kind)] = true;
   sub_contact_slots_ = 1, extra_caches_ = false, compact_ = true, keep_wall_pairs_ = true;
@@ -66,11 +66,11 @@ void CollisionDriver::ask_table(const Model& model) {
     else
       compact_ = compact_ && needs.compact;
   };
-  for (int b = 0; b < kShapeKindCount; ++b) {
+  for (int b = 0; b < kMaxShapeKinds; ++b) {
     if (!grain[b]) continue;
     for (int a = 0; a <= b; ++a)
       if (grain[a]) meet(a, b, false);
-    for (int w = 0; w < kShapeKindCount; ++w)
+    for (int w = 0; w < kMaxShapeKinds; ++w)
       if (wall[w]) meet(w, b, true);
   }
   shapes_asked_ = model.shapes.size();
@@ -197,8 +197,7 @@ PosedShape CollisionDriver::posed_body(const Model& model, const State& state, I
   const Shape& sh = model.shapes[m.shape];
   PosedShape p;
   p.kind = sh.kind;
-  p.hull = &sh.hull;
-  p.compound = &sh.compound;
+  p.geometry = sh.geometry.get();
   p.radius = m.radius;
   p.rot = &rot_[i];
   p.q = &state.bodies[i].q;
@@ -211,7 +210,7 @@ PosedShape CollisionDriver::posed_wall(const Model& model, const State& state, I
   const WallModel& wm = model.walls[w];
   PosedShape p;
   p.kind = wm.kind;
-  p.half = wm.half;
+  p.geometry = &wm.half;  // a box's; a plane reads none
   p.rot = &wall_rot_[w];
   p.q = &state.walls[w].q;
   p.pos = state.walls[w].x;

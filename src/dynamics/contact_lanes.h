@@ -1,5 +1,5 @@
-// The contact law for four contacts at once: contact_force (contact_law.h),
-// the same arithmetic written on lanes of four doubles (GCC's vector
+// The contact law for four contacts at once: the law's arithmetic (below)
+// written on lanes of four doubles (GCC's vector
 // extension: one AVX register with -march=x86-64-v3).
 //
 // Why. A contact's force is a chain of dependent square roots and divisions
@@ -9,15 +9,16 @@
 // taking two square roots out of it changed nothing measurable). Four
 // contacts in the lanes of one register share each wait.
 //
-// The same as contact_force, step by step (the branches become selects):
+// Step by step (the one-contact form's branches become selects):
 //   f_n = max(0, gain K_n delta - C_n v_n),  v_n = v.n,  v_t = v - v_n n;
 //   xi <- (xi - (xi.n) n) sqrt(|xi|^2 / |xi - (xi.n) n|^2)   (if xi != 0; 0 if
 //         xi lies along n), then xi += v_t dt;
 //   f_t = -K_t xi - C_t v_t; if |f_t| > mu f_n: f_t <- f_t (mu f_n / |f_t|) and
 //         xi <- -(f_t + C_t v_t) / K_t (0 if K_t = 0).
-// The roundings may differ from contact_force's by an ulp (FMA contraction is
-// the compiler's in either); tests/dynamics/contact_lanes_test.cpp checks the
-// two against each other on random contacts of every law.
+// The roundings may differ from the one-contact form's by an ulp (FMA
+// contraction is the compiler's in either); tests/dynamics/
+// contact_lanes_test.cpp checks the two against each other on random
+// contacts of every law (the one-contact form: contact_force_reference.h).
 #pragma once
 
 #include "dynamics/contact_law.h"
@@ -40,8 +41,8 @@ inline Lanes root(Lanes x) {
 #endif
 }
 
-// Four contacts' kinematics (ContactKinematics, lane l for contact l) and
-// their springs, updated in place.
+// Four contacts' kinematics (lane l for contact l) and their springs,
+// updated in place.
 struct ContactLanes {
   Lanes nx, ny, nz;  // unit normal, a to b
   Lanes delta;       // overlap (m)

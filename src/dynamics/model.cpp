@@ -14,6 +14,18 @@
 
 namespace grainlab {
 
+Index Model::add_shape(Shape s) {
+  const auto positive = [](double v) { return v > 0 && std::isfinite(v); };
+  if (!positive(s.volume) || !positive(s.equivalent_radius) || !positive(s.bounding_radius) ||
+      !positive(s.unit_moments.minCoeff()) || !std::isfinite(s.unit_moments.maxCoeff()))
+    input_error("shape '{}': volume {} m^3, principal moments ({}, {}, {}) m^5, equivalent radius {} m and "
+                "bounding radius {} m must all be positive and finite",
+                s.name, s.volume, s.unit_moments.x(), s.unit_moments.y(), s.unit_moments.z(), s.equivalent_radius,
+                s.bounding_radius);
+  shapes.push_back(std::move(s));
+  return static_cast<Index>(shapes.size() - 1);
+}
+
 Index Model::add_sphere_shape(double radius, std::string name) {
   if (!(radius > 0 && std::isfinite(radius)))
     input_error("sphere shape '{}': radius {} m must be positive and finite", name, radius);
@@ -26,8 +38,7 @@ Index Model::add_sphere_shape(double radius, std::string name) {
   s.unit_moments = Vec3::Constant(0.4 * s.volume * radius * radius);
   s.equivalent_radius = radius;
   s.bounding_radius = radius;
-  shapes.push_back(std::move(s));
-  return static_cast<Index>(shapes.size() - 1);
+  return add_shape(std::move(s));
 }
 
 namespace {
@@ -61,9 +72,8 @@ Index Model::add_mesh_shape(const TriMesh& mesh, std::string name) {
   if (!(mp.volume > 0)) input_error("shape '{}': the mesh has no volume", name);
   Shape s = principal_mesh_shape(mesh, mp, std::move(name));
   s.kind = Shape::Kind::Polytope;
-  s.hull = polytope_of(s.mesh.vertices);
-  shapes.push_back(std::move(s));
-  return static_cast<Index>(shapes.size() - 1);
+  s.geometry = std::make_shared<const ConvexPolytope>(polytope_of(s.mesh.vertices));
+  return add_shape(std::move(s));
 }
 
 Index Model::add_concave_shape(const TriMesh& mesh, const ConvexDecomposition& dec, std::string name) {
@@ -74,6 +84,7 @@ Index Model::add_concave_shape(const TriMesh& mesh, const ConvexDecomposition& d
   if (!(mp.volume > 0)) input_error("shape '{}': the mesh has no volume", name);
   Shape s = principal_mesh_shape(mesh, mp, std::move(name));
   s.kind = Shape::Kind::Compound;
+  CompoundShape compound;
   for (std::size_t k = 0; k < pieces.size(); ++k) {
     const std::vector<Vec3>& points = pieces[k];
     // The piece's points in the principal frame, about their mean (the piece's offset).
@@ -96,10 +107,10 @@ Index Model::add_concave_shape(const TriMesh& mesh, const ConvexDecomposition& d
     if (k < dec.cells.size())
       for (const HalfSpace& h : dec.cells[k])
         piece.cell.push_back({mp.principal_axes.transpose() * h.n, h.c - h.n.dot(mp.centroid)});
-    s.compound.pieces.push_back(std::move(piece));
+    compound.pieces.push_back(std::move(piece));
   }
-  shapes.push_back(std::move(s));
-  return static_cast<Index>(shapes.size() - 1);
+  s.geometry = std::make_shared<const CompoundShape>(std::move(compound));
+  return add_shape(std::move(s));
 }
 
 // Mass properties of a compound: volumes add; the centroid is the
@@ -146,6 +157,7 @@ Index Model::add_compound_shape(const std::vector<CompoundPart>& parts, std::str
   s.volume = volume;
   s.unit_moments = eig.eigenvalues();
   s.equivalent_radius = std::cbrt(3.0 * volume / (4.0 * std::numbers::pi));
+  CompoundShape compound;
   for (std::size_t k = 0; k < parts.size(); ++k) {
     const CompoundPart& p = parts[k];
     CompoundPiece piece;
@@ -167,10 +179,10 @@ Index Model::add_compound_shape(const std::vector<CompoundPart>& parts, std::str
     }
     if (p.radius > 0) s.bounding_radius = std::max(s.bounding_radius, piece.offset.norm() + p.radius);
     for (const auto& f : local.faces) s.mesh.faces.push_back({f[0] + base, f[1] + base, f[2] + base});
-    s.compound.pieces.push_back(std::move(piece));
+    compound.pieces.push_back(std::move(piece));
   }
-  shapes.push_back(std::move(s));
-  return static_cast<Index>(shapes.size() - 1);
+  s.geometry = std::make_shared<const CompoundShape>(std::move(compound));
+  return add_shape(std::move(s));
 }
 
 Index Model::add_material(const Material& m) {

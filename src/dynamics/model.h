@@ -16,13 +16,18 @@
 #include "geometry/convex_decomposition.h"
 #include "geometry/trimesh.h"
 
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace grainlab {
 
+// A grain shape. What every kind has is here; what a kind has of its own (a
+// polytope's hull, a compound's pieces) is `geometry`, which only the kind's
+// pair routines read (collision/shape_kind.h says each kind's type), so that a
+// new kind adds no field here.
 struct Shape {
-  using Kind = ShapeKind;  // Sphere, Polytope or Compound (collision/shape_kind.h)
+  using Kind = ShapeKind;  // Sphere, Polytope, Compound or a registered kind (collision/shape_kind.h)
   Kind kind = Kind::Sphere;
   std::string name;
   bool isotropic = false;            // inertia is a multiple of the identity (spheres): free rotation is exact
@@ -30,10 +35,18 @@ struct Shape {
   Vec3 unit_moments = Vec3::Zero();  // principal moments per unit density at scale 1 (m^5)
   double equivalent_radius = 0;      // radius of the sphere of equal volume, scale 1 (m)
   double bounding_radius = 0;        // max distance of the surface from the centroid, scale 1 (m)
-  ConvexPolytope hull;               // polytope shapes: convex hull in the principal frame
-  TriMesh mesh;                      // polytope and compound shapes: the surface in the principal frame
-                                     // (a concave grain's exact mesh; its pieces only collide)
-  CompoundShape compound;            // compound shapes: the pieces in the principal frame
+  TriMesh mesh;                      // the surface in the principal frame, drawn and fingerprinted
+                                     // (a concave grain's exact mesh; its pieces only collide); none for spheres
+  // The kind's collision geometry in the principal frame at scale 1 (a
+  // Polytope's ConvexPolytope, a Compound's CompoundShape; null for a
+  // Sphere), shared by the bodies of the shape and by copies of the Model.
+  std::shared_ptr<const void> geometry;
+
+  // The geometry as the kind's type T.
+  template <class T>
+  const T& geometry_as() const {
+    return *static_cast<const T*>(geometry.get());
+  }
 };
 
 // One piece of a compound shape as given to Model::add_compound_shape: a
@@ -77,6 +90,10 @@ struct Model {
   std::vector<BodyModel> bodies;
   std::vector<WallModel> walls;
 
+  // A shape of any kind, filled by its kind's own builder (the ones below,
+  // or a registered kind's): refuses one whose volume, moments or radii are
+  // not positive and finite.
+  Index add_shape(Shape s);
   // Shapes. A mesh shape is moved to its principal frame; its hull is the
   // collision shape (exact for convex grains), its mesh gives mass properties.
   Index add_sphere_shape(double radius, std::string name = "sphere");

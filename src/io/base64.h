@@ -1,5 +1,6 @@
 // Base64 (RFC 4648, standard alphabet, '=' padding) for the binary arrays of
-// VTK XML files. Small and exact: decode(encode(b)) == b for any bytes.
+// VTK XML files. Only tests decode (tests/io/vtk_decoding.h, which checks
+// decode(encode(b)) == b for any bytes).
 #pragma once
 
 #include <cstdint>
@@ -15,11 +16,6 @@ std::string base64_encode(std::span<const std::uint8_t> bytes);
 
 // Appends the base64 text of `bytes` to `out` (no separator).
 void base64_append(std::string& out, std::span<const std::uint8_t> bytes);
-
-// The bytes of base64 `text`. Whitespace is skipped; anything else outside the
-// alphabet, a length that is not a multiple of 4, or padding before the end
-// throws std::invalid_argument.
-std::vector<std::uint8_t> base64_decode(std::string_view text);
 
 // Number of base64 characters that encode n bytes (padding included).
 constexpr std::size_t base64_length(std::size_t n) { return (n + 2) / 3 * 4; }

@@ -19,12 +19,14 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <bit>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <limits>
 #include <map>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <sstream>
@@ -139,21 +141,18 @@ std::vector<SpecField> law_fields() {
   return out;
 }
 
-// The key list and the tables for the tests and laws registered now (rebuilt
-// when one is added): the shared keys, each test's table, and the laws'
-// parameters after material.friction.
+// The key list and the tables for the tests and laws registered now: the
+// shared keys, each test's table, and the laws' parameters after
+// material.friction.
 struct KeyList {
   std::vector<SpecField> fields;
   std::vector<SpecTable> tables;
-  std::size_t tests = 0, laws = 0;
+  std::size_t tests = 0, laws = 0;  // the registrations it was built for
 };
 
-const KeyList& key_list() {
-  static std::mutex mutex;
-  static KeyList k;
-  std::lock_guard lock(mutex);
+KeyList build_key_list() {
+  KeyList k;
   const std::vector<LabTestEntry>& entries = lab_test_entries();
-  if (!k.fields.empty() && k.tests == entries.size() && k.laws == contact_laws().size()) return k;
   k.fields.assign(kHeadFields.begin(), kHeadFields.end());
   k.tables.assign(kHeadTables.begin(), kHeadTables.end());
   std::string doc = "the lab test:";
@@ -178,6 +177,24 @@ const KeyList& key_list() {
   k.tests = entries.size();
   k.laws = contact_laws().size();
   return k;
+}
+
+// Built once, and again only after a test or a law is registered (every list
+// built is kept, so a reference to an earlier one stays valid); a call finds
+// the current one without a lock.
+const KeyList& key_list() {
+  static std::atomic<const KeyList*> current{nullptr};
+  static std::mutex mutex;
+  static std::vector<std::unique_ptr<const KeyList>> built;
+  const auto fresh = [](const KeyList* k) {
+    return k && k->tests == lab_test_entries().size() && k->laws == contact_laws().size();
+  };
+  if (const KeyList* k = current.load(std::memory_order_acquire); fresh(k)) return *k;
+  const std::lock_guard lock(mutex);
+  if (const KeyList* k = current.load(std::memory_order_relaxed); fresh(k)) return *k;
+  built.push_back(std::make_unique<const KeyList>(build_key_list()));
+  current.store(built.back().get(), std::memory_order_release);
+  return *built.back();
 }
 
 // The registered law named `name`, or null.

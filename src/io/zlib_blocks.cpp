@@ -26,12 +26,6 @@ void append_u64(std::string& out, std::uint64_t v) {
   out.append(b, 8);
 }
 
-std::uint64_t read_u64(std::string_view data, std::size_t at) {
-  std::uint64_t v;
-  std::memcpy(&v, data.data() + at, 8);
-  return v;
-}
-
 }  // namespace
 
 void append_zlib_blocks(std::string& out, std::span<const std::uint8_t> bytes) {
@@ -58,35 +52,6 @@ void append_zlib_blocks(std::string& out, std::span<const std::uint8_t> bytes) {
   append_u64(out, blocks ? n - (blocks - 1) * kZlibBlockSize : 0);
   for (const auto& p : packed) append_u64(out, p.size());
   for (const auto& p : packed) out.append(reinterpret_cast<const char*>(p.data()), p.size());
-}
-
-std::vector<std::uint8_t> read_zlib_blocks(std::string_view data, std::size_t& used) {
-  if (data.size() < 24) throw std::invalid_argument("the zlib block header is cut short");
-  const std::uint64_t blocks = read_u64(data, 0), block_size = read_u64(data, 8), last = read_u64(data, 16);
-  if (blocks > data.size() / 8 || (blocks > 0 && (block_size == 0 || last > block_size)))
-    throw std::invalid_argument(fmt::format("the zlib block header is damaged ({} blocks of {} bytes, the last {})",
-                                            blocks, block_size, last));
-  std::size_t at = 24 + 8 * blocks;
-  if (data.size() < at) throw std::invalid_argument("the zlib block sizes are cut short");
-  const std::uint64_t total = blocks == 0 ? 0 : (blocks - 1) * block_size + (last ? last : block_size);
-  std::vector<std::uint8_t> out(total);
-  std::size_t written = 0;
-  for (std::uint64_t b = 0; b < blocks; ++b) {
-    const std::uint64_t csize = read_u64(data, 24 + 8 * b);
-    const std::uint64_t expect = b + 1 < blocks ? block_size : total - written;
-    if (csize > data.size() - at)
-      throw std::invalid_argument(fmt::format("zlib block {} of {} is cut short", b + 1, blocks));
-    uLongf len = static_cast<uLongf>(expect);
-    const int rc = uncompress(out.data() + written, &len, reinterpret_cast<const Bytef*>(data.data() + at),
-                              static_cast<uLong>(csize));
-    if (rc != Z_OK || len != expect)
-      throw std::invalid_argument(fmt::format("zlib block {} of {} does not decompress to {} bytes ({})", b + 1,
-                                              blocks, expect, rc == Z_OK ? "wrong size" : zError(rc)));
-    at += csize;
-    written += expect;
-  }
-  used = at;
-  return out;
 }
 
 }  // namespace grainlab

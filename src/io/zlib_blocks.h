@@ -8,6 +8,7 @@
 // last-block field holds the true size of the last block (VTK reads 0 as "a
 // full block", and a full size the same way). An empty array has no blocks.
 // Blocks are compressed in parallel; the bytes do not depend on the threads.
+// Only tests read them back (tests/io/vtk_decoding.h).
 #pragma once
 
 #include <cstddef>
@@ -24,10 +25,5 @@ inline constexpr std::size_t kZlibBlockSize = std::size_t(1) << 18;
 
 // Appends the header and the compressed blocks of `bytes` to `out`.
 void append_zlib_blocks(std::string& out, std::span<const std::uint8_t> bytes);
-
-// The bytes of the header and blocks that start `data` (trailing data is
-// allowed); `used` gets how many bytes of `data` they took. Throws
-// std::invalid_argument saying what is wrong for a damaged or truncated stream.
-std::vector<std::uint8_t> read_zlib_blocks(std::string_view data, std::size_t& used);
 
 }  // namespace grainlab

@@ -72,8 +72,6 @@ class DirectShearTest final : public PreparedTest {
   const std::vector<std::vector<double>>& series() const override { return p_.rows; }
   const std::vector<BodyState>& reference() const override { return p_.reference; }
   std::vector<SummaryValue> summary() const override;
-  double specimen_volume() const override { return prep_->box_area() * world().state.walls[Cap].x.z(); }
-  double boundary_stress() const override { return normal_stress(); }
   std::optional<BandGeometry> band_geometry() const override;
   std::vector<std::uint8_t> save() const override;
   void load(std::span<const std::uint8_t> bytes) override;

@@ -1,10 +1,21 @@
-// What LabTest gives every test (lab_test.h): the band binning of a test
-// that imposes no displacement.
+// What LabTest gives every test (lab_test.h): the defaults of a test
+// without series or reference, and the band binning of a test that imposes
+// no displacement.
 #include "lab/lab_test.h"
 
 #include <algorithm>
 
 namespace grainlab {
+
+const std::vector<std::vector<double>>& LabTest::series() const {
+  static const std::vector<std::vector<double>> none;
+  return none;
+}
+
+const std::vector<BodyState>& LabTest::reference() const {
+  static const std::vector<BodyState> none;
+  return none;
+}
 
 BandGeometry whole_specimen_band_geometry(const World& world) {
   BandGeometry b;

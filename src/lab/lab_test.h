@@ -43,6 +43,10 @@ struct BandGeometry {
   double length = 0;            // m, over which it is imposed: the displacement is strain x length
 };
 
+// Pure: what every test has (its spec and World, the steps, the phases,
+// loading, its checkpoint bytes). The rest has a default for a test that
+// does not care (no series, no summary, no notes); PreparedTest gives the
+// preparation's where there is one.
 class LabTest {
  public:
   // Appends its own values to every sample row (a higher layer's analysis).
@@ -70,27 +74,28 @@ class LabTest {
   virtual bool done() const = 0;
   // Step at which loading began (0 before).
   virtual std::int64_t loading_start_step() const = 0;
-  // Loading progress (direct shear: shear strain) and its final value.
+  // Loading progress (direct shear: shear strain), its final value and what
+  // it measures, for messages ("shear strain").
   virtual double progress() const = 0;
-  virtual double final_progress() const = 0;
-  // What progress() measures, for messages ("shear strain").
-  virtual std::string progress_label() const = 0;
+  virtual double final_progress() const { return 1; }
+  virtual std::string progress_label() const { return "progress"; }
   // One progress line of current measurements (e.g. "strain 0.0100  stress ratio 0.550 ...").
-  virtual std::string status_line() const = 0;
+  virtual std::string status_line() const { return ""; }
   // A line worth printing as the current phase begins ("" if none).
-  virtual std::string phase_note() const = 0;
+  virtual std::string phase_note() const { return ""; }
   // The final results in one sentence.
-  virtual std::string result_line() const = 0;
+  virtual std::string result_line() const { return "done"; }
 
-  // Series: column names (with units; the observer's last) and rows.
-  virtual std::vector<std::string> series_columns() const = 0;
-  virtual const std::vector<std::vector<double>>& series() const = 0;
-  // Sets the sample observer (before the first sample; the same on a resumed run).
-  virtual void set_sample_observer(std::vector<std::string> columns, SampleObserver observer) = 0;
-  // The grains at the start of loading (empty before).
-  virtual const std::vector<BodyState>& reference() const = 0;
-  // Named results (run.json), valid at any time (zeros before loading).
-  virtual std::vector<SummaryValue> summary() const = 0;
+  // Series: column names (with units; the observer's last) and rows; none by default.
+  virtual std::vector<std::string> series_columns() const { return {}; }
+  virtual const std::vector<std::vector<double>>& series() const;
+  // Sets the sample observer (before the first sample; the same on a resumed
+  // run); a test without series takes no samples and ignores it.
+  virtual void set_sample_observer(std::vector<std::string> /*columns*/, SampleObserver /*observer*/) {}
+  // The grains at the start of loading (empty before, and by default).
+  virtual const std::vector<BodyState>& reference() const;
+  // Named results (run.json), valid at any time (zeros before loading); none by default.
+  virtual std::vector<SummaryValue> summary() const { return {}; }
 
   // Specimen volume (m^3) and the stress the boundary holds (Pa) now.
   virtual double specimen_volume() const = 0;

@@ -8,6 +8,21 @@ namespace grainlab {
 PreparedTest::PreparedTest(const LabSpec& spec, std::unique_ptr<SpecimenPreparation> preparation)
     : spec_(spec), prep_(std::move(preparation)) {}
 
+const std::vector<std::string>& PreparedTest::own_columns() const {
+  static const std::vector<std::string> none;
+  return none;
+}
+
+std::string PreparedTest::status_line() const { return prep_->status_line(); }
+
+std::string PreparedTest::phase_note() const { return prep_->phase_note(); }
+
+std::vector<SummaryValue> PreparedTest::summary() const { return prep_->summary(); }
+
+double PreparedTest::specimen_volume() const { return prep_->box_area() * world().state.walls[Cap].x.z(); }
+
+double PreparedTest::boundary_stress() const { return prep_->normal_stress(); }
+
 std::vector<std::string> PreparedTest::series_columns() const {
   std::vector<std::string> c = own_columns();
   c.insert(c.end(), observer_columns_.begin(), observer_columns_.end());

@@ -1,7 +1,8 @@
 // The base of a lab test whose specimen a SpecimenPreparation
 // (lab/preparation.h) makes: it owns the preparation (and so the World),
 // the run's spec, the sample observer, and the byte helpers the tests'
-// checkpoints use. A test steps the preparation until it is prepared, then
+// checkpoints use; the preparation's measurements are its defaults (status
+// line, notes, summary, the cap's stress and the volume below it). A test steps the preparation until it is prepared, then
 // loads the specimen its own way: the direct shear (lab/direct_shear.h) in
 // the split box, the oedometer and the triaxial test in the box with its gap
 // closed (lab/closed_box_test.h).
@@ -28,13 +29,20 @@ class PreparedTest : public LabTest {
   double time_step() const override { return prep_->time_step(); }
   std::vector<std::string> series_columns() const override;
   void set_sample_observer(std::vector<std::string> columns, SampleObserver observer) override;
+  // The preparation's (lab/preparation.h).
+  std::string status_line() const override;
+  std::string phase_note() const override;
+  std::vector<SummaryValue> summary() const override;
+  // Below the cap, over the box's floor (m^3), and the cap's stress (Pa).
+  double specimen_volume() const override;
+  double boundary_stress() const override;
 
   // The specimen's preparation.
   const SpecimenPreparation& preparation() const { return *prep_; }
 
  protected:
-  // The test's own series columns (the observer's follow).
-  virtual const std::vector<std::string>& own_columns() const = 0;
+  // The test's own series columns (the observer's follow); none by default.
+  virtual const std::vector<std::string>& own_columns() const;
   // Appends the observer's values to a row of own_columns().
   void observe(std::vector<double>& row) const;
   // Grain states (the reference of a loading phase).

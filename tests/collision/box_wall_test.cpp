@@ -24,7 +24,7 @@ struct Wall {
   PosedShape posed() const {
     PosedShape p;
     p.kind = ShapeKind::Box;
-    p.half = half;
+    p.geometry = &half;
     p.rot = &rot;
     p.q = &q;
     p.pos = pos;

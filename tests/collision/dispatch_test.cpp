@@ -64,14 +64,54 @@ TEST(Dispatch, PairWithoutARoutineIsRefused) {
   EXPECT_THROW(collide_shapes(plane, box, cache, out), std::logic_error);
 }
 
+// A kind registered at run time gets the next free id and its name, and its
+// routine serves both orders (the other flipped); a routine for a kind not
+// registered is refused.
+namespace {
+int marked_routine(const PosedShape& a, const PosedShape&, PairCache&, PairCache*, SubContact* out) {
+  out[0] = {};
+  out[0].geo.normal = Vec3::UnitX();
+  out[0].geo.depth = a.radius;
+  return 1;
+}
+}  // namespace
+
+TEST(Dispatch, RegisteredKindGetsTheNextIdAndItsRoutineServesBothOrders) {
+  const int before = shape_kind_count();
+  EXPECT_GE(before, kBuiltInShapeKinds);
+  const ShapeKind k = register_shape_kind("marked");
+  EXPECT_EQ(static_cast<int>(k), before);
+  EXPECT_EQ(shape_kind_count(), before + 1);
+  EXPECT_EQ(shape_kind_name(k), "marked");
+  EXPECT_EQ(shape_kind_name(ShapeKind::Polytope), "polytope");
+  EXPECT_FALSE(has_pair_routine(k, ShapeKind::Sphere));
+  register_pair_routine(k, ShapeKind::Sphere, marked_routine, PairNeeds{.reads_cache = false});
+  EXPECT_TRUE(has_pair_routine(k, ShapeKind::Sphere));
+  EXPECT_TRUE(has_pair_routine(ShapeKind::Sphere, k));
+  EXPECT_FALSE(pair_needs(ShapeKind::Sphere, k).reads_cache);
+  PosedShape a, b;
+  a.kind = k, a.radius = 0.25;
+  b.kind = ShapeKind::Sphere, b.radius = 0.5;
+  PairCache cache;
+  SubContact out[kMaxSubContacts];
+  ASSERT_EQ(collide_shapes(a, b, cache, out), 1);
+  EXPECT_EQ(out[0].geo.depth, 0.25);
+  EXPECT_EQ(out[0].geo.normal, Vec3::UnitX());
+  ASSERT_EQ(collide_shapes(b, a, cache, out), 1);  // flipped: the marked shape is still the routine's a
+  EXPECT_EQ(out[0].geo.depth, 0.25);
+  EXPECT_EQ(out[0].geo.normal, -Vec3::UnitX());
+  const auto unregistered = static_cast<ShapeKind>(kMaxShapeKinds - 1);
+  EXPECT_THROW(register_pair_routine(unregistered, ShapeKind::Sphere, marked_routine, {}), std::logic_error);
+}
+
 // The needs the table declares (PairNeeds) hold for what its routines do:
 // slots within kMaxSubContacts, a flipped pair needing what its direct one
 // does, and a pair declared compact gives through collide_compact the bits
 // of its table routine (after the caller's bounding-sphere test), without
 // touching the cache it declares it does not read.
 TEST(Dispatch, PairNeedsHoldForTheRoutines) {
-  for (int a = 0; a < kShapeKindCount; ++a)
-    for (int b = 0; b < kShapeKindCount; ++b) {
+  for (int a = 0; a < shape_kind_count(); ++a)
+    for (int b = 0; b < shape_kind_count(); ++b) {
       const auto ka = static_cast<ShapeKind>(a), kb = static_cast<ShapeKind>(b);
       const PairNeeds& n = pair_needs(ka, kb);
       if (!has_pair_routine(ka, kb)) continue;
@@ -85,7 +125,7 @@ TEST(Dispatch, PairNeedsHoldForTheRoutines) {
     }
   Rng rng(11);
   int touching = 0, compact_pairs = 0;
-  for (int k = 0; k < kShapeKindCount; ++k) {
+  for (int k = 0; k < shape_kind_count(); ++k) {
     const auto kind = static_cast<ShapeKind>(k);
     if (!pair_needs(kind, kind).compact) continue;
     ++compact_pairs;

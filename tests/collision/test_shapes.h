@@ -192,7 +192,7 @@ inline PosedShape posed_polytope(const ConvexPolytope& hull, const Mat3& rot, co
                                  double scale) {
   PosedShape p;
   p.kind = ShapeKind::Polytope;
-  p.hull = &hull;
+  p.geometry = &hull;
   p.rot = &rot;
   p.q = &q;
   p.pos = pos;

@@ -53,7 +53,7 @@ Material sticky() {
 // World centre of piece k of body i.
 Vec3 piece_center(const World& w, Index i, int k) {
   const Shape& s = w.model.shapes[w.model.bodies[i].shape];
-  return w.state.bodies[i].x + w.state.bodies[i].q * s.compound.pieces[k].offset;
+  return w.state.bodies[i].x + w.state.bodies[i].q * s.geometry_as<CompoundShape>().pieces[k].offset;
 }
 
 // Steps n times with every body held at its pose; the dumbbell moves at u x_hat.
@@ -99,9 +99,9 @@ TEST(CompoundShape, DumbbellMassPropertiesByParallelAxes) {
   EXPECT_NEAR(s.unit_moments[0], 0.8 * v * r * r, 1e-9 * v * r * r);
   EXPECT_NEAR(s.unit_moments[1], 0.8 * v * r * r + 2 * v * L * L, 1e-9 * v * L * L);
   EXPECT_NEAR(s.unit_moments[2], 0.8 * v * r * r + 2 * v * L * L, 1e-9 * v * L * L);
-  ASSERT_EQ(s.compound.pieces.size(), 2u);
-  EXPECT_NEAR(s.compound.pieces[0].offset.norm(), L, 1e-12);
-  EXPECT_NEAR((s.compound.pieces[0].offset + s.compound.pieces[1].offset).norm(), 0, 1e-12);
+  ASSERT_EQ(s.geometry_as<CompoundShape>().pieces.size(), 2u);
+  EXPECT_NEAR(s.geometry_as<CompoundShape>().pieces[0].offset.norm(), L, 1e-12);
+  EXPECT_NEAR((s.geometry_as<CompoundShape>().pieces[0].offset + s.geometry_as<CompoundShape>().pieces[1].offset).norm(), 0, 1e-12);
   EXPECT_NEAR(s.bounding_radius, L + r, 1e-12);
   EXPECT_FALSE(s.isotropic);
 }

@@ -1,11 +1,12 @@
 // The four-lane contact law (dynamics/contact_lanes.h, what the World runs)
-// against the one-contact reference contact_force (dynamics/contact_law.h),
+// against the one-contact reference contact_force (contact_force_reference.h),
 // for every registered law, on random contacts: approaching and separating
 // (the no-tension clamp), sticking and sliding (the Coulomb cap), springs
 // that are zero, tilted out of the tangent plane or lying along the normal,
 // and unlike materials in neighbouring lanes. The two may round differently
 // (FMA contraction is the compiler's), so they agree to 1e-12 of the
 // contact's force scale, not bit for bit.
+#include "contact_force_reference.h"
 #include "dynamics/contact_lanes.h"
 #include "dynamics/laws/registry.h"
 

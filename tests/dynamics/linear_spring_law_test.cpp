@@ -7,10 +7,11 @@
 // Registered at run time (register_contact_law), it is read by the real
 // config code ([material.linear-spring] k = ..., or the flat [material] k),
 // validated by its own rule, mixed, and its force is that of the routines the
-// World runs for a law: contact_force (one contact) and contact_force_lanes
-// (four at once, the World's loop). A law the World steps is also listed in
+// World runs for a law: contact_force_lanes (four at once, the World's loop),
+// and the one-contact reference contact_force (contact_force_reference.h). A law the World steps is also listed in
 // RegisteredLaws (dynamics/laws/registry.h: one line), which compiles its
 // force loop; the World refuses this one by name.
+#include "contact_force_reference.h"
 #include "core/error.h"
 #include "dynamics/contact_lanes.h"
 #include "dynamics/laws/registry.h"

@@ -1,6 +1,7 @@
 // Base64: RFC 4648 test vectors, round trips of every length mod 3 and every
 // byte value, and the inputs the decoder must refuse.
 #include "io/base64.h"
+#include "io/vtk_decoding.h"
 
 #include <gtest/gtest.h>
 

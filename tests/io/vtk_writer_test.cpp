@@ -8,6 +8,7 @@
 #include "core/error.h"
 #include "core/atomic_file.h"
 #include "io/base64.h"
+#include "io/vtk_decoding.h"
 #include "io/pvd_reader.h"
 #include "io/vtp_reader.h"
 #include "io_test_helpers.h"

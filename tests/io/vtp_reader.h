@@ -16,6 +16,7 @@
 
 #include "core/error.h"
 #include "io/base64.h"
+#include "io/vtk_decoding.h"
 #include "io/vtk_writer.h"
 #include "io/xml_scanner.h"
 #include "io/zlib_blocks.h"

@@ -2,7 +2,10 @@
 // test ("hold": prepares its specimen, then holds it under the cap for
 // hold.steps steps), with one config key of its own, registered from the test
 // binary (lab/lab_registry.h), read by the config (its key, its default, its
-// check, a misspelt key's suggestion) and run through make_lab_test.
+// check, a misspelt key's suggestion) and run through make_lab_test. It
+// writes only what every test has (lab/lab_test.h: phases, loading, progress,
+// checkpoint bytes); series, summary, notes, volume and stress are the
+// defaults of LabTest and PreparedTest.
 #include "core/error.h"
 #include "io/config.h"
 #include "lab/lab_registry.h"
@@ -51,16 +54,6 @@ class HoldTest final : public PreparedTest {
   bool done() const override { return prep_->prepared() && world().state.step - start_ >= steps(); }
   std::int64_t loading_start_step() const override { return start_; }
   double progress() const override { return prep_->prepared() ? double(world().state.step - start_) / steps() : 0; }
-  double final_progress() const override { return 1; }
-  std::string progress_label() const override { return "fraction of the hold"; }
-  std::string status_line() const override { return prep_->status_line(); }
-  std::string phase_note() const override { return prep_->phase_note(); }
-  std::string result_line() const override { return "held"; }
-  const std::vector<std::vector<double>>& series() const override { return rows_; }
-  const std::vector<BodyState>& reference() const override { return reference_; }
-  std::vector<SummaryValue> summary() const override { return prep_->summary(); }
-  double specimen_volume() const override { return prep_->box_area() * world().state.walls[Cap].x.z(); }
-  double boundary_stress() const override { return prep_->normal_stress(); }
   std::vector<std::uint8_t> save() const override {
     ByteWriter b;
     prep_->save(b);
@@ -76,15 +69,9 @@ class HoldTest final : public PreparedTest {
   }
 
  private:
-  const std::vector<std::string>& own_columns() const override {
-    static const std::vector<std::string> none;
-    return none;
-  }
   int steps() const { return spec_.settings<HoldSpec>().steps; }
 
   std::int64_t start_ = 0;
-  std::vector<std::vector<double>> rows_;
-  std::vector<BodyState> reference_;
 };
 
 // The one registration line (once per process).
@@ -131,4 +118,15 @@ TEST(LabTestRecipe, AHoldTestRegisteredHereReadsItsOwnKeyAndRuns) {
   EXPECT_TRUE(t->advance(10));
   EXPECT_EQ(t->world().state.step, 10);
   EXPECT_EQ(t->phase_name(), "deposit");
+  // The defaults: no series, the preparation's summary and status, the cap's stress over the volume below it.
+  EXPECT_TRUE(t->series().empty());
+  EXPECT_TRUE(t->series_columns().empty());
+  EXPECT_TRUE(t->reference().empty());
+  EXPECT_EQ(t->summary().size(), static_cast<const PreparedTest&>(*t).preparation().summary().size());
+  EXPECT_FALSE(t->summary().empty());
+  EXPECT_EQ(t->status_line(), static_cast<const PreparedTest&>(*t).preparation().status_line());
+  const World& w = t->world();
+  EXPECT_EQ(t->specimen_volume(), tiny.box.length * tiny.box.width * w.state.walls[Cap].x.z());
+  EXPECT_EQ(t->boundary_stress(), w.state.walls[Cap].force.z() / (tiny.box.length * tiny.box.width));
+  EXPECT_EQ(t->result_line(), "done");
 }
