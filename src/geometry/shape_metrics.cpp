@@ -409,6 +409,11 @@ PrincipalFrame principal_frame(const TriMesh& mesh) {
   return f;
 }
 
+void move_to_principal_frame(TriMesh& mesh) {
+  const PrincipalFrame f = principal_frame(mesh);
+  for (Vec3& v : mesh.vertices) v = f.axes.transpose() * (v - f.centroid);
+}
+
 ShapeMetrics shape_metrics(const TriMesh& mesh) {
   ShapeMetrics s;
   const MassProperties mp = mass_properties(mesh);

@@ -38,6 +38,10 @@ struct PrincipalFrame {
 // Centroid and principal axes (mass_properties), with extents measured along them.
 PrincipalFrame principal_frame(const TriMesh& mesh);
 
+// Moves the mesh's centroid to the origin and its principal axes (long,
+// intermediate, short) to x, y, z.
+void move_to_principal_frame(TriMesh& mesh);
+
 // All descriptors of a closed, outward mesh (one that passes check_mesh).
 ShapeMetrics shape_metrics(const TriMesh& mesh);
 

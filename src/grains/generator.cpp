@@ -119,11 +119,9 @@ double corner_radius(const RoundnessOfRadius& f, double roundness) {
 }
 
 // Centroid to the origin, principal axes (long, intermediate, short) to x, y, z.
-TriMesh to_principal_frame(const TriMesh& mesh) {
-  const PrincipalFrame f = principal_frame(mesh);
-  TriMesh out = mesh;
-  for (Vec3& v : out.vertices) v = f.axes.transpose() * (v - f.centroid);
-  return out;
+TriMesh to_principal_frame(TriMesh mesh) {
+  move_to_principal_frame(mesh);
+  return mesh;
 }
 
 // A dent seen from the centroid (step 6): its rim's half-angle and the width of the wall, radians.

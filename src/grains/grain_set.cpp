@@ -59,11 +59,6 @@ TriMesh load_grain_file(const std::filesystem::path& path, int sh_faces, const S
 
 double size_of(const TriMesh& mesh) { return principal_frame(mesh).extents[1]; }
 
-void move_to_principal_frame(TriMesh& mesh) {
-  const PrincipalFrame f = principal_frame(mesh);
-  for (Vec3& v : mesh.vertices) v = f.axes.transpose() * (v - f.centroid);
-}
-
 GrainSet generate_grain_set(GrainPreset preset, int count, std::uint64_t seed, SieveRange sieve, int faces) {
   GeneratorSpec spec = preset_spec(preset);
   spec.faces = faces;

@@ -37,10 +37,6 @@ struct GrainSet {
 // The size a sieve sorts by: the intermediate principal dimension I, in m.
 double size_of(const TriMesh& mesh);
 
-// Moves the mesh's centroid to the origin and its principal axes (long,
-// intermediate, short) to x, y, z.
-void move_to_principal_frame(TriMesh& mesh);
-
 // `count` grains of a preset. Sizes (size_of) spread uniformly over the sieve
 // range (one size per equal slice of the range, jittered and shuffled), so even
 // a small set spans it. The same arguments give the same meshes bit for bit,

@@ -30,6 +30,7 @@
 #include "core/error.h"
 #include "core/parallel.h"
 #include "geometry/mass_properties.h"
+#include "geometry/shape_metrics.h"
 #include "grains/grain_set.h"
 #include "grains/sh_grain.h"
 
