@@ -189,6 +189,8 @@ def plan_cases(base, out, grid=None, seeds=None, variants=None):
     # A grid key's folder label: its last part, or the whole key where two keys share it.
     last = [k.split(".")[-1] for k in varied]
     labels = {k: (k.split(".")[-1] if last.count(k.split(".")[-1]) == 1 else k) for k in varied}
+    # Every key a variant sets is an input of every case (the base's value where its variant leaves it).
+    variant_keys = list(dict.fromkeys(k for v in variants for k in v if k != "name"))
     cwd = os.getcwd()
     out = os.path.abspath(out)
     cases, seen = [], {}
@@ -211,6 +213,9 @@ def plan_cases(base, out, grid=None, seeds=None, variants=None):
                 if seed is not None:
                     case_config["seed"] = seed
                     parts.append("seed-%d" % seed)
+                flat = flatten(case_config)
+                for key in variant_keys:
+                    inputs[key] = flat.get(key)
                 inputs.setdefault("seed", case_config.get("seed", 1))
                 case_config.setdefault("output", {})
                 if not isinstance(case_config["output"], dict):

@@ -33,7 +33,7 @@ KEYS = {
     "variants": "array of tables [[variants]]: a name and config keys that go together",
     "threads": "each run's --threads (integer >= 0; 1 by default)",
     "workers": "worker processes of the local Dask cluster (0: one per core)",
-    "scheduler": "address of an existing Dask scheduler (tcp://HOST:8786); \"\" = a local cluster",
+    "scheduler": "an existing Dask scheduler: tcp://HOST:8786 or a scheduler file; \"\" = a local cluster",
     "report": "write the comparison report of the finished cases (true/false)",
     "case_reports": "each run also writes its own report/ (true/false)",
 }

@@ -35,8 +35,8 @@ def _parser():
         "seeds) as `grainlab run` tasks on Dask: a local cluster, or an existing one (--scheduler).",
         epilog=EPILOG, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("sweep_file", metavar="SWEEP.toml", help="the sweep file")
-    p.add_argument("--scheduler", metavar="ADDRESS", help="an existing Dask scheduler, e.g. tcp://head:8786 "
-                   "(overrides the file's scheduler)")
+    p.add_argument("--scheduler", metavar="ADDRESS", help="an existing Dask scheduler: its address (e.g. "
+                   "tcp://head:8786) or its scheduler file (dask scheduler --scheduler-file); overrides the file's")
     p.add_argument("--workers", type=int, metavar="N", help="worker processes of the local cluster (default: the "
                    "file's workers, else one per core)")
     p.add_argument("--out", metavar="DIR", help="the sweep's folder (overrides the file's out)")

@@ -86,8 +86,9 @@ class _Cluster:
             self.owned.append(cluster)
             client = self.distributed.Client(cluster)
             self.owned.insert(0, client)
-        elif isinstance(client, str):
-            client = self.distributed.Client(client)
+        elif isinstance(client, str):  # an address, or the file `dask scheduler --scheduler-file` writes
+            client = (self.distributed.Client(scheduler_file=client) if os.path.isfile(client)
+                      else self.distributed.Client(client))
             self.owned.append(client)
         self.client = client
 
@@ -171,7 +172,8 @@ def sweep(base, grid=None, seeds=None, client=None, out="runs/sweep", workers=No
     variants: [{"name": ..., key: value, ...}]: sets of values that go together (a sand preset and
         its final strain), crossed with the grid; their name starts the folder names.
     client: None (a LocalCluster of `workers` single-threaded processes, default one per core),
-        a distributed.Client, or a scheduler address ("tcp://head:8786").
+        a distributed.Client, a scheduler address ("tcp://head:8786") or a scheduler file (the
+        JSON file of `dask scheduler --scheduler-file PATH`).
     out: the sweep's folder: one folder per case, cases.csv, report/.
     threads: each run's --threads (1: one core per case, the cluster runs the cases side by side).
     grainlab: the binary (default $GRAINLAB, then PATH); workers on other machines must see the

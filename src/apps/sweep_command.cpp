@@ -105,8 +105,9 @@ Command add_sweep_command(CLI::App& app) {
                   "[grid] of \"dotted.config_key\" = [values]")
       ->required();
   cmd->add_option("--scheduler", o->scheduler,
-                  "address of a running Dask scheduler (e.g. tcp://head:8786; start one with `dask scheduler` and "
-                  "workers with `dask worker ADDRESS --nthreads 1`); default: a local cluster");
+                  "a running Dask scheduler: its address (e.g. tcp://head:8786) or the file of `dask scheduler "
+                  "--scheduler-file FILE`; start workers with `dask worker ADDRESS --nthreads 1` (docs/sweeps.md). "
+                  "Default: a local cluster");
   cmd->add_option("--workers", o->workers, "worker processes of the local cluster (default: one per core)")
       ->check(CLI::PositiveNumber);
   cmd->add_option("--out", o->out, "the sweep's folder (default: the file's out, else runs/<file name>)");

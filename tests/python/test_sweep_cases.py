@@ -94,3 +94,29 @@ def test_a_case_waits_for_the_grainlab_that_holds_its_folder(tmp_path):
     assert not (folder / "series.csv").exists()
     os.close(fd)
     assert _sweep_task.run_case(_job(folder, tiny()))["status"] == "finished"
+
+
+EXAMPLES = os.path.join(os.path.dirname(__file__), "..", "..", "examples")
+
+
+def test_the_four_sand_study_files_plan_its_runs():
+    from grainlab import _sweep_file
+    plans = {}
+    for name in ("four_sands", "four_sands_damping"):
+        kw = _sweep_file.read(os.path.join(EXAMPLES, name + ".sweep.toml"))
+        plans[name] = plan_cases(kw["base"], kw["out"], grid=kw.get("grid"), seeds=kw.get("seeds"),
+                                 variants=kw.get("variants"))
+    sands = {c.name: tomllib.loads(c.config_text) for c in plans["four_sands"]}
+    assert len(sands) == 12 and "angular_seed-9" in sands
+    # bench/study_four_sands: 12 x 12 x 6 largest grains, Dr 0.9 on the own indices, 10 % (angular 20 %).
+    d_max = 8.41e-4
+    for name, c in sands.items():
+        assert c["box"]["length"] == pytest.approx(12 * d_max) and c["box"]["height"] == pytest.approx(6 * d_max)
+        assert c["specimen"]["relative_density"] == 0.9 and c["specimen"]["indices"] == "own"
+        assert c["shear"]["final_strain"] == (0.2 if name.startswith("angular") else 0.1)
+    damping = [tomllib.loads(c.config_text) for c in plans["four_sands_damping"]]
+    assert [(c["material"]["hertz"]["gamma_n"], c["material"]["hertz"]["gamma_t"]) for c in damping] == [
+        (40, 20), (20, 10), (80, 40)]
+    assert damping[0]["specimen"]["from"].endswith("runs/four_sands/glass-beads_seed-7/specimen.bin")
+    beads = sands["glass-beads_seed-7"]  # the specimen they shear: the same grains in the same box
+    assert all(c["grains"] == beads["grains"] and c["box"] == beads["box"] and c["seed"] == 7 for c in damping)

@@ -8,7 +8,9 @@ files are refused with the file, line, what and how to fix, before anything runs
 
 import csv
 import os
+import re
 import subprocess
+import time
 
 import pytest
 
@@ -101,3 +103,32 @@ def test_a_python_without_dask_names_the_debian_package(tmp_path):
     assert p.returncode == 3, p.stdout + p.stderr
     assert "sudo apt-get install python3-distributed" in p.stderr, p.stderr
     assert not (tmp_path / "runs").exists()
+
+
+def test_an_existing_cluster_runs_the_cases_its_workers_need_no_grainlab_package(tmp_path):
+    # A scheduler and a worker as a user starts them (dask scheduler / dask worker), the worker
+    # without the grainlab package on its PYTHONPATH; the sweep given the scheduler file.
+    bare = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}
+    scheduler_file = str(tmp_path / "scheduler.json")
+    daemons = [subprocess.Popen(["dask", "scheduler", "--scheduler-file", scheduler_file, "--port", "0",
+                                 "--no-dashboard"], env=bare, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)]
+    try:
+        daemons.append(subprocess.Popen(["dask", "worker", "--scheduler-file", scheduler_file, "--nthreads", "1",
+                                         "--no-dashboard", "--local-directory", str(tmp_path / "dask")], env=bare,
+                                        stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL))
+        for _ in range(600):
+            if os.path.exists(scheduler_file):
+                break
+            time.sleep(0.05)
+        p = run_sweep(str(tmp_path), "report = false\nseeds = [1, 2]\n" + inline_base(), "--scheduler", scheduler_file)
+        assert p.returncode == 0, p.stdout + p.stderr
+        assert "2 of 2 cases finished" in p.stdout
+        # Ran by the worker process of that `dask worker` (a child of its nanny).
+        log = (tmp_path / "runs" / "study" / "seed-2" / "sweep.log").read_text()
+        pid = int(re.search(r"\(pid (\d+)\)", log).group(1))
+        with open("/proc/%d/stat" % pid) as f:
+            assert int(f.read().rsplit(")", 1)[1].split()[1]) == daemons[1].pid
+    finally:
+        for d in daemons:
+            d.terminate()
+            d.wait(timeout=30)
