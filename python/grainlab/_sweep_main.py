@@ -2,8 +2,8 @@
 
 Exit status: 0 every case finished; 2 bad input (the sweep file, a missing grainlab
 binary); 3 a case failed (the others ran; the table has its error), Dask is missing, or
-the cluster failed. Ctrl-C stops the sweep: the running cases save their checkpoints,
-and the same command continues.
+the cluster failed; 130 stopped (Ctrl-C): the running cases saved their checkpoints, and
+the same command continues.
 """
 
 import argparse
@@ -90,5 +90,11 @@ def main(argv=None):
         print("grainlab sweep: error: %s; check the path or the scheduler's address" % e, file=sys.stderr)
         return 3
     for name in result.failed:
-        print("grainlab sweep: case %s failed: %s" % (name, result.results[name].get("error", "")), file=sys.stderr)
+        if name not in result.stopped:
+            print("grainlab sweep: case %s failed: %s" % (name, result.results[name].get("error", "")),
+                  file=sys.stderr)
+    if result.stopped and len(result.stopped) == len(result.failed):
+        print("grainlab sweep: %d case(s) stopped by a signal; run the same command again to continue them"
+              % len(result.stopped), file=sys.stderr)
+        return 130
     return 3 if result.failed else 0

@@ -12,7 +12,8 @@ needs the grainlab binary and the shared output folder, not this package.
   first waits for the folder's lock (.grainlab.lock, a flock that a running grainlab
   holds), so a resubmitted case does not collide with its dying predecessor.
 - A run that fails is returned with its exit code and the tail of its error output,
-  never raised: the other cases go on.
+  never raised: the other cases go on. A run stopped by a signal (exit 130: Ctrl-C)
+  is "stopped": its checkpoint is saved.
 """
 
 import ctypes
@@ -122,10 +123,12 @@ def run_case(job):
     if resume:
         args.append("--resume")
     started = time.monotonic()
-    with open(os.path.join(folder, LOG_FILE), "a") as log:
+    log_path = os.path.join(folder, LOG_FILE)
+    with open(log_path, "a") as log:
         log.write("# %s on %s (pid %d): %s\n" % (time.strftime("%Y-%m-%d %H:%M:%S"), result["host"],
                                                  os.getpid(), " ".join(args)))
         log.flush()
+        sitting_start = log.tell()
         try:
             child = subprocess.Popen(args, cwd=folder, stdin=subprocess.DEVNULL, stdout=log,
                                      stderr=subprocess.PIPE, text=True, preexec_fn=_die_with_parent(os.getpid()))
@@ -137,6 +140,11 @@ def run_case(job):
     result.update(exit_code=child.returncode, resumed=resume, wall_s=time.monotonic() - started)
     if child.returncode == 0 and run_json_done(folder):
         return dict(result, status="finished")
-    return dict(result, status="failed",
-                error=_tail(err) or "grainlab exited with code %d and no message (see %s)"
-                % (child.returncode, os.path.join(folder, LOG_FILE)))
+    if child.returncode == 130:  # a stop signal (Ctrl-C, SIGTERM): grainlab saved what it had
+        return dict(result, status="stopped", error="stopped by a signal; the next sweep continues it from what "
+                    "it saved")
+    with open(log_path) as log:  # no message on stderr: the end of what this sitting printed
+        log.seek(sitting_start)
+        printed = log.read()
+    return dict(result, status="failed", error=_tail(err) or _tail(printed, 5) or
+                "grainlab exited with code %s and printed nothing (see %s)" % (child.returncode, log_path))

@@ -45,8 +45,13 @@ class SweepResult:
 
     @property
     def failed(self):
-        """The names of the cases that did not finish."""
+        """The names of the cases that did not finish (stopped ones included)."""
         return [c.name for c in self.cases if self.results.get(c.name, {}).get("status") not in ("finished", "skipped")]
+
+    @property
+    def stopped(self):
+        """The names of the cases stopped by a signal (Ctrl-C); the next sweep continues them."""
+        return [c.name for c in self.cases if self.results.get(c.name, {}).get("status") == "stopped"]
 
 
 def find_grainlab(grainlab=None):
@@ -108,6 +113,8 @@ def _describe(result):
         return "finished in %.1f s%s" % (result["wall_s"], " (resumed from its checkpoint)" if result["resumed"] else "")
     if result["status"] == "skipped":
         return "finished before"
+    if result["status"] == "stopped":
+        return "stopped (its checkpoint is saved)"
     first = (result.get("error") or "").strip().splitlines()
     return "FAILED (exit code %s): %s" % (result.get("exit_code"), first[-1] if first else "")
 
@@ -210,10 +217,12 @@ def sweep(base, grid=None, seeds=None, client=None, out="runs/sweep", workers=No
     report_path = index if os.path.exists(index) and not ran else None
     if report and done and (ran or report_path is None):
         report_path = _write_report(binary, done, out, log)
-    failed = [c.name for c in cases if results[c.name]["status"] not in ("finished", "skipped")]
-    log("grainlab sweep: %d of %d cases finished%s in %.0f s; table %s%s"
-        % (len(cases) - len(failed), len(cases), ", %d FAILED (see the table's error column)" % len(failed)
-           if failed else "", time.monotonic() - started, table_path,
+    failed = sum(results[c.name]["status"] == "failed" for c in cases)
+    stopped = sum(results[c.name]["status"] == "stopped" for c in cases)
+    log("grainlab sweep: %d of %d cases finished%s%s in %.0f s; table %s%s"
+        % (len(cases) - failed - stopped, len(cases),
+           ", %d FAILED (see the table's error column)" % failed if failed else "",
+           ", %d stopped" % stopped if stopped else "", time.monotonic() - started, table_path,
            ", report %s" % report_path if report_path else ""))
     return SweepResult(folder=out, cases=cases, results=results, table=_sweep_table.as_frame(rows),
                        table_path=table_path, report=report_path, ran=ran)

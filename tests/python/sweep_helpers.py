@@ -1,5 +1,6 @@
 """What the sweep tests share: the grainlab binary, a tiny config, runs of it with the CLI."""
 
+import glob
 import os
 import subprocess
 
@@ -63,3 +64,15 @@ def run_with_cli(configs):
 def read_bytes(path):
     with open(path, "rb") as f:
         return f.read()
+
+
+def grainlab_processes_in(folder):
+    """Pids of grainlab processes whose working directory is `folder`."""
+    pids = []
+    for proc in glob.glob("/proc/[0-9]*"):
+        try:
+            if os.readlink(proc + "/cwd") == folder and os.readlink(proc + "/exe").endswith("grainlab"):
+                pids.append(int(os.path.basename(proc)))
+        except OSError:
+            pass
+    return pids

@@ -8,13 +8,16 @@ start when its config changed, and waits for a grainlab that still holds its fol
 
 import fcntl
 import os
+import signal
+import threading
+import time
 import tomllib
 
 import pytest
 
 from grainlab import _sweep_task, _toml_write
 from grainlab._sweep_cases import SweepError, plan_cases
-from sweep_helpers import grainlab, tiny
+from sweep_helpers import grainlab, grainlab_processes_in, run_with_cli, tiny
 
 
 def test_toml_text_reads_back_as_the_same_dict():
@@ -82,6 +85,24 @@ def test_a_case_runs_once_and_again_only_when_its_config_changed(tmp_path):
     assert changed["status"] == "finished" and not changed["resumed"], changed
     assert (folder / "series.csv").read_bytes() != series
     assert (folder / "sweep.log").read_text().count("# ") == 2
+
+
+def test_a_case_stopped_by_a_signal_continues_from_its_checkpoint(tmp_path):
+    folder = tmp_path / "c"
+    job = _job(folder, tiny(strain=0.06))
+    outcome = {}
+    task = threading.Thread(target=lambda: outcome.update(_sweep_task.run_case(job)))
+    task.start()
+    while not (folder / "checkpoint.bin").exists() and task.is_alive():
+        time.sleep(0.01)
+    for pid in grainlab_processes_in(str(folder)):
+        os.kill(pid, signal.SIGINT)  # what Ctrl-C sends
+    task.join()
+    assert outcome["status"] == "stopped" and outcome["exit_code"] == 130, outcome
+    again = _sweep_task.run_case(job)
+    assert again["status"] == "finished" and again["resumed"], again
+    cli = run_with_cli([(tiny(strain=0.06, folder=str(tmp_path / "cli")), str(tmp_path / "cli"))])[0]
+    assert (folder / "series.csv").read_bytes() == open(os.path.join(cli, "series.csv"), "rb").read()
 
 
 def test_a_case_waits_for_the_grainlab_that_holds_its_folder(tmp_path):

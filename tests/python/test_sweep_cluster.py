@@ -17,23 +17,11 @@ import pytest
 from distributed import Client, LocalCluster
 
 from grainlab.sweep import sweep
-from sweep_helpers import grainlab, read_bytes, run_with_cli, tiny
+from sweep_helpers import grainlab, grainlab_processes_in, read_bytes, run_with_cli, tiny
 
 STRESSES = [60e3, 100e3]
 SEEDS = [3, 4]
-STRAIN = 0.12  # about a second a case, time to kill one in the middle
-
-
-def _children_in(folder):
-    """Pids of grainlab processes whose working directory is `folder`."""
-    pids = []
-    for proc in glob.glob("/proc/[0-9]*"):
-        try:
-            if os.readlink(proc + "/cwd") == folder and os.readlink(proc + "/exe").endswith("grainlab"):
-                pids.append(int(os.path.basename(proc)))
-        except OSError:
-            pass
-    return pids
+STRAIN = 0.08  # well under a second a case unloaded: time to kill one in the middle
 
 
 def _kill_a_worker_mid_case(client, out, killed, stop):
@@ -47,7 +35,7 @@ def _kill_a_worker_mid_case(client, out, killed, stop):
             for address, keys in client.processing().items():
                 if any(("grainlab-case-%s-" % name) in str(k) for k in keys):
                     pid = client.run(os.getpid, workers=[address])[address]
-                    children = _children_in(folder)
+                    children = grainlab_processes_in(folder)
                     os.kill(pid, signal.SIGKILL)
                     killed.update(case=name, worker_pid=pid, children=children)
                     return
