@@ -80,10 +80,15 @@ def _wait_for_lock(folder, timeout_s):
 
 
 def _die_with_parent(parent_pid):
-    """preexec_fn: SIGTERM to the child when the worker process that started it dies."""
+    """preexec_fn: SIGTERM to the child when the worker process that started it dies.
+
+    libc is loaded here, in the parent: between fork and exec the child only calls it
+    (loading a library there could wait forever on a lock another thread held at the fork).
+    """
+    prctl = ctypes.CDLL(None, use_errno=True).prctl
+
     def set_death_signal():
-        libc = ctypes.CDLL(None, use_errno=True)
-        libc.prctl(_PR_SET_PDEATHSIG, signal.SIGTERM, 0, 0, 0)
+        prctl(_PR_SET_PDEATHSIG, signal.SIGTERM, 0, 0, 0)
         if os.getppid() != parent_pid:  # the worker died before prctl took effect
             os._exit(143)
     return set_death_signal

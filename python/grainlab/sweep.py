@@ -26,6 +26,7 @@ import shutil
 import subprocess
 import sys
 import time
+import uuid
 
 from . import _sweep_table, _sweep_task
 from ._sweep_cases import Case, SweepError, plan_cases
@@ -129,9 +130,10 @@ def _run_cases(todo, client, workers, allowed_failures, job_args, log):
         if getattr(c, "dashboard_link", None) and cluster.owned:
             log("Dask dashboard: %s" % c.dashboard_link)
         futures = {}
+        sitting = uuid.uuid4().hex[:8]
         for case in todo:
-            f = c.submit(_sweep_task.run_case, _job(case, *job_args),
-                         key="grainlab-case-%s-%s" % (case.name, case.config_hash[:12]))
+            f = c.submit(_sweep_task.run_case, _job(case, *job_args),  # a key of its own each sitting
+                         key="grainlab-case-%s-%s-%s" % (case.name, case.config_hash[:12], sitting))
             futures[f] = case
         results = {}
         for f in cluster.distributed.as_completed(list(futures)):
@@ -140,10 +142,9 @@ def _run_cases(todo, client, workers, allowed_failures, job_args, log):
                 r = f.result()
             except cluster.distributed.KilledWorker as e:
                 r = {"case": case.name, "status": "failed", "exit_code": None, "resumed": False, "wall_s": 0.0,
-                     "error": "the workers running this case died %d times (the scheduler's "
-                              "distributed.scheduler.allowed-failures): %s; look for what kills them (memory?), "
-                              "then run the sweep again: it continues from the case's checkpoint"
-                              % (allowed_failures + 1, e)}
+                     "error": "the workers running this case died more often than the scheduler allows "
+                              "(distributed.scheduler.allowed-failures): %s; look for what kills them (memory?), "
+                              "then run the sweep again: it continues from the case's checkpoint" % e}
             except Exception as e:  # the task itself failed (e.g. the folder is not writable there)
                 r = {"case": case.name, "status": "failed", "exit_code": None, "resumed": False, "wall_s": 0.0,
                      "error": "%s: %s" % (type(e).__name__, e)}
