@@ -86,7 +86,8 @@ class _Cluster:
         if client is None:
             import dask
             with dask.config.set({"distributed.scheduler.allowed-failures": allowed_failures}):
-                cluster = self.distributed.LocalCluster(n_workers=workers or os.cpu_count() or 1,
+                cores = len(os.sched_getaffinity(0))  # the cores this process may use (taskset, cgroups)
+                cluster = self.distributed.LocalCluster(n_workers=workers or cores,
                                                         threads_per_worker=1, processes=True,
                                                         dashboard_address=":0")
             self.owned.append(cluster)
