@@ -39,6 +39,9 @@ Command add_run_command(CLI::App& app);
 // `grainlab report`: the HTML report of one run folder, or a comparison of several.
 Command add_report_command(CLI::App& app);
 
+// `grainlab sweep SWEEP.toml`: a parameter sweep on Dask (python/grainlab/sweep.py).
+Command add_sweep_command(CLI::App& app);
+
 // `grainlab ct segment|synth`: X-ray CT volumes to grain meshes, and synthetic scans.
 Command add_ct_command(CLI::App& app);
 

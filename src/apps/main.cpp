@@ -86,7 +86,7 @@ int main(int argc, char** argv) {
 
   const std::vector<apps::Command> commands = {apps::add_grains_command(app),
                                                apps::add_run_command(app), apps::add_report_command(app),
-                                               apps::add_ct_command(app)};
+                                               apps::add_ct_command(app), apps::add_sweep_command(app)};
 
   try {
     app.parse(argc, argv);

@@ -1,0 +1,1 @@
+"""grainlab from Python: parameter sweeps of `grainlab run` on Dask (grainlab.sweep)."""
