@@ -50,6 +50,15 @@ struct Grain {
     const double far = dent_radius + 1.2;
     return rho < 1 - margin && (l - dent).squaredNorm() > far * far ? 1 : 0;
   }
+  // How deep `p` (inside) lies: along the ray from the centre, the surface is
+  // at l / rho (rho = level^(1/p)), |l| (1 / rho - 1) away; from the dent,
+  // |l - dent| - r_dent. The smaller of the two (a bound on the distance to the surface).
+  double depth(const Vec3& p) const {
+    const Vec3 l = axes.transpose() * (p - centre);
+    const double rho = std::pow(level(l, semi), 1.0 / power);
+    const double ray = rho > 0 ? l.norm() * (1 / rho - 1) : semi.minCoeff();
+    return std::min(ray, (l - dent).norm() - dent_radius);
+  }
   // Half-extents of an axis-aligned box around the (grown) grain: that of its turned bounding box.
   Vec3 half_box(double grow = 0) const {
     Vec3 h;
@@ -181,7 +190,12 @@ PackedPhantom make_packed_phantom(const PackedPhantomSpec& spec) {
     --left_in_cluster;
   }
 
-  // Occupancy by sub-sampling; the truth is the grain filling most of a voxel.
+  // Occupancy by sub-sampling. Where pressed grains overlap, a sample belongs
+  // to the grain it lies deepest in (Grain::depth): the grains partition the
+  // solid, as a segmentation must (a watershed on the distance map cuts the
+  // overlap near its middle), so a grain's true volume is its share of the
+  // solid, not its whole shape (the overlap counted twice). The truth is the
+  // grain owning most of a voxel.
   PackedPhantom out;
   GreyVolume occ;
   occ.size = {spec.size, spec.size, spec.size};
@@ -195,29 +209,51 @@ PackedPhantom make_packed_phantom(const PackedPhantomSpec& spec) {
   for (std::size_t g = 0; g < grains.size(); ++g) {
     const Grain& gr = grains[g];
     const Vec3 h = gr.half_box();
+    std::vector<std::size_t> near;  // grains whose boxes meet this one's
+    for (std::size_t q = 0; q < grains.size(); ++q) {
+      const Vec3 hq = grains[q].half_box();
+      if (q != g && ((gr.centre - grains[q].centre).array().abs() <= (h + hq).array() + 1).all()) near.push_back(q);
+    }
+    // True when `p` (inside gr) lies deeper in gr than in every other grain holding it (ties: the lower index).
+    auto owns = [&](const Vec3& p, const std::vector<std::size_t>& rivals) {
+      const double d = gr.depth(p);
+      for (std::size_t q : rivals) {
+        if (!grains[q].inside(p)) continue;
+        const double dq = grains[q].depth(p);
+        if (dq > d || (dq == d && q < g)) return false;
+      }
+      return true;
+    };
     Size3 lo, hi;
     for (int i = 0; i < 3; ++i) {
       lo[i] = std::max<std::int64_t>(0, static_cast<std::int64_t>(std::floor(gr.centre[i] - h[i])));
       hi[i] = std::min<std::int64_t>(spec.size - 1, static_cast<std::int64_t>(std::ceil(gr.centre[i] + h[i])));
     }
     double total = 0;
+    std::vector<std::size_t> rivals;
     for (std::int64_t z = lo[2]; z <= hi[2]; ++z) {
       for (std::int64_t y = lo[1]; y <= hi[1]; ++y) {
         for (std::int64_t x = lo[0]; x <= hi[0]; ++x) {
-          const int certain = gr.sure(Vec3(x, y, z));
+          const Vec3 centre(x, y, z);
+          int certain = gr.sure(centre);
           if (certain < 0) continue;
+          rivals.clear();
+          for (std::size_t q : near)
+            if (grains[q].sure(centre) >= 0) rivals.push_back(q);
+          if (!rivals.empty()) certain = 0;  // a voxel another grain may share is sampled
           int in = certain > 0 ? s * s * s : 0;
           for (int c = 0; c < s && !certain; ++c) {
             for (int b = 0; b < s; ++b) {
               for (int a = 0; a < s; ++a) {
-                in += gr.inside(Vec3(x + (a + 0.5) / s - 0.5, y + (b + 0.5) / s - 0.5, z + (c + 0.5) / s - 0.5));
+                const Vec3 p(x + (a + 0.5) / s - 0.5, y + (b + 0.5) / s - 0.5, z + (c + 0.5) / s - 0.5);
+                in += gr.inside(p) && (rivals.empty() || owns(p, rivals));
               }
             }
           }
           if (!in) continue;
           const float f = static_cast<float>(in) / (s * s * s);
           const std::size_t i = occ.index(x, y, z);
-          occ.values[i] += f;
+          occ.values[i] += f;  // the grains' shares of a voxel sum to its solid fraction (<= 1)
           total += f;
           if (f > best[i]) {
             best[i] = f;
@@ -228,7 +264,6 @@ PackedPhantom make_packed_phantom(const PackedPhantomSpec& spec) {
     }
     out.volumes.push_back(total * voxel_volume);
   }
-  for (float& v : occ.values) v = std::min(v, 1.0f);
   gaussian_blur(occ, spec.blur);
   constexpr float kPore = 10000, kSolid = 40000;
   for (float& v : occ.values) v = kPore + (kSolid - kPore) * v + static_cast<float>(spec.noise * (kSolid - kPore) * rng.normal());

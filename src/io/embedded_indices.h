@@ -6,7 +6,8 @@
 // They are what `grainlab run` itself would measure (lab/index_densities.h,
 // one seed at the run's seed), for exactly the default inputs that the
 // measurement depends on: the record holds the hash of their
-// index_cache_key (seed, grains, material, consolidation stress, numerics)
+// index_cache_key (seed, grains, material, consolidation stress, numerics
+// but the thread count and the loading speed)
 // and is taken only by a spec with the same key. A run of other grains, or
 // of the default grains under another seed, material or numerics, measures
 // its own (or reads its index_densities.json). The record also holds the

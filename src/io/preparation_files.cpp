@@ -16,6 +16,11 @@ std::string index_cache_key(const LabSpec& spec) {
   key["normal_stress"] = all["consolidation"]["normal_stress"];
   key["numerics"] = all["numerics"];
   key["numerics"].erase("threads");
+  // The loading speed (shear, axial, oedometer stages) is set after the
+  // specimen is prepared: any value keys as the default, so the key of a
+  // default-speed spec is the one it always was (index_densities.json files,
+  // the embedded default's indices).
+  key["numerics"]["inertial_number"] = spec_to_json(LabSpec{})["numerics"]["inertial_number"];
   return key.dump();
 }
 

@@ -16,7 +16,8 @@
 namespace grainlab {
 
 // The inputs the own indices depend on (grains, material, consolidation
-// stress, numerics, seed) as one JSON string.
+// stress, numerics but the thread count and the loading speed, seed) as one
+// JSON string.
 std::string index_cache_key(const LabSpec& spec);
 
 nlohmann::json to_json(const IndexDensities& d);

@@ -47,6 +47,7 @@ TEST(EmbeddedIndices, AreTakenOnlyForTheDefaultsIndexInputs) {
   spec.specimen.relative_density = 0.3;
   spec.box.length *= 2;  // the index box is 10 d_max across whatever the test's box
   spec.settings<ShearSpec>().final_strain = 0.2;
+  spec.numerics.inertial_number *= 5;  // the loading speed, after the preparation (preset_runs_test.cpp)
   EXPECT_TRUE(embedded_index_densities(spec));
   // What it depends on does not.
   const auto other = [](auto change) {
