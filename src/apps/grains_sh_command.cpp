@@ -318,7 +318,10 @@ Command add_grains_sh_commands(CLI::App& grains) {
       "rotation; A_2 is elongation, higher n ever finer relief), and the mean, standard deviation, minimum\n"
       "and maximum of the volume-equivalent diameter (m), roundness, sphericity, elongation, flatness and\n"
       "convexity that `grains stats` measures. SH files (.dat) are meshed at --faces; meshes are fitted\n"
-      "to --degree (as fit-sh) for the spectrum and measured as they are.");
+      "to --degree (as fit-sh) for the spectrum and measured as they are. With two grains or more it also\n"
+      "writes [model], the set's shape model for `grains generate --spectrum`: the grains turned into their\n"
+      "principal frames, their coefficients of degree <= --model-degree divided by a_00, and the mean and the\n"
+      "first --components principal components of those (with the spread of the grains' scores along each).");
   spectrum->add_option("files", so->inputs, "grain files (.dat, .stl, .obj, .ply), or folders of them")->required();
   spectrum->add_option("--out", so->out, "TOML file to write, e.g. SAND.toml")->required();
   add_sh_file_options(*spectrum, so->faces, so->sh);
