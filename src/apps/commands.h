@@ -29,8 +29,10 @@ void add_sh_file_options(CLI::App& cmd, int& faces, ShOptions& sh);
 
 // `grainlab grains generate --spectrum FILE`: `count` random SH grains drawn
 // from a spectrum file (io/sh_spectrum_file.h) written as binary STL files
-// to `out`, with their shape beside the measured set's.
-int run_generate_from_spectrum(const std::string& spectrum, int count, std::uint64_t seed, const std::string& out,
+// to `out`, with their shape beside the measured set's. `method`: a
+// parse_sh_method name, or "" for shape-model when the file has a model and
+// random-phase otherwise.
+int run_generate_from_spectrum(const std::string& spectrum, const std::string& method, int count, std::uint64_t seed, const std::string& out,
                                int faces);
 
 // `grainlab run`: a direct shear test from a config file.

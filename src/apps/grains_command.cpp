@@ -6,6 +6,7 @@
 #include "geometry/mesh_io.h"
 #include "geometry/shape_metrics.h"
 #include "grains/grain_set.h"
+#include "grains/sh_sands.h"
 #include "lab/grain_library.h"
 
 #include <fmt/format.h>
@@ -28,6 +29,7 @@ namespace fs = std::filesystem;
 struct GenerateOptions {
   std::string preset;
   std::string spectrum;
+  std::string method;
   int count = 50;
   std::uint64_t seed = 1;
   std::string out;
@@ -74,16 +76,18 @@ std::string set_summary(const std::vector<ShapeMetrics>& m) {
 }
 
 int run_generate(const GenerateOptions& o) {
-  if (!o.spectrum.empty()) return run_generate_from_spectrum(o.spectrum, o.count, o.seed, o.out, o.faces);
+  if (!o.spectrum.empty()) return run_generate_from_spectrum(o.spectrum, o.method, o.count, o.seed, o.out, o.faces);
   if (o.preset.empty()) input_error("grains generate needs --preset NAME or --spectrum SAND.toml");
-  GeneratorSpec spec = preset_spec(parse_grain_preset(o.preset));
+  const bool sh = find_sh_sand(o.preset) != nullptr;
+  GeneratorSpec spec = sh ? GeneratorSpec{} : preset_spec(parse_grain_preset(o.preset));
   spec.faces = o.faces;
   if (o.roundness) spec.roundness = *o.roundness;
   if (o.elongation) spec.elongation = *o.elongation;
   if (o.flatness) spec.flatness = *o.flatness;
   spec.convexity = o.convexity;
   Stopwatch clock;
-  const GrainSet set = generate_grain_set(spec, o.count, o.seed, SieveRange{o.d_min, o.d_max});
+  const GrainSet set = sh ? generate_sh_grain_set(o.preset, o.count, o.seed, SieveRange{o.d_min, o.d_max}, o.faces)
+                          : generate_grain_set(spec, o.count, o.seed, SieveRange{o.d_min, o.d_max});
   const double seconds = clock.seconds();
   std::error_code ec;
   fs::create_directories(o.out, ec);
@@ -177,6 +181,9 @@ Command add_grains_command(CLI::App& app) {
                         GrainPreset::Angular}) {
     presets += "\n  " + grain_preset_description(p);
   }
+  presets += "\nor a spherical-harmonic sand (shape model of 16 CT-scanned grains, method shape-model; --roundness, "
+             "--elongation, --flatness and --convexity do not apply):";
+  for (const ShSand& s : sh_sands()) presets += "\n  " + s.name + ": " + s.description;
   auto* gen = grains->add_subcommand(
       "generate",
       "write COUNT synthetic grains of a preset, or drawn from a sand's spectrum, as binary STL files\n"
@@ -186,19 +193,28 @@ Command add_grains_command(CLI::App& app) {
       "circle, averaged over the three principal projections), elongation is I/L and flatness S/I\n"
       "(L >= I >= S principal dimensions).\n"
       "Sizes (the intermediate dimension I, what a sieve sorts by) spread evenly over [d-min, d-max].\n"
-      "With --spectrum instead, each grain is a random spherical-harmonic surface: per degree n an amplitude\n"
-      "A_n/A_0 drawn from the lognormal of the spectrum's mean and standard deviation, spread over the\n"
-      "2n+1 coefficients of degree n in a random direction (so in no preferred orientation), redrawn\n"
-      "while r <= 0 somewhere; then scaled to a volume-equivalent diameter drawn the same way from the\n"
-      "spectrum's (clamped to its range), centred and turned into its principal frame. Files sh-0001.stl,\n"
-      "...; the generated set's shape is printed beside the measured set's.\n"
+      "With --spectrum instead, each grain is a random spherical-harmonic surface. --method shape-model (the\n"
+      "default when the file has a [model]): its degrees <= K are the set's mean shape plus each principal\n"
+      "component of the set times a normal score of that component's spread (the grains aligned to their\n"
+      "principal frames), the rest of the variance and the degrees above K with random phases as below.\n"
+      "--method random-phase: per degree n an amplitude A_n/A_0 drawn from the lognormal of the spectrum's\n"
+      "mean and standard deviation, spread over the 2n+1 coefficients of degree n in a random direction.\n"
+      "A draw with r <= 0 somewhere is drawn again; then the grain is scaled to a volume-equivalent diameter\n"
+      "drawn from the spectrum's (lognormal, clamped to its range), centred and turned into its principal\n"
+      "frame. Files sh-0001.stl, ...; the generated set's shape is printed beside the measured set's.\n"
       "The same seed gives the same files, bit for bit.");
   auto* preset = gen->add_option("--preset", g->preset, presets)
-                     ->check(CLI::IsMember({"glass-beads", "rounded", "sub-angular", "angular"}));
+                     ->check(CLI::IsMember({"glass-beads", "rounded", "sub-angular", "angular", "sh-ottawa",
+                                            "sh-river", "sh-limestone"}));
   auto* spectrum = gen->add_option("--spectrum", g->spectrum,
                                    "spectrum file of a sand (TOML, from `grainlab grains spectrum`): draw random "
                                    "spherical-harmonic grains with its spectrum and sizes instead of a preset")
                        ->excludes(preset);
+  gen->add_option("--method", g->method,
+                  "with --spectrum: shape-model (the file's [model]: the set's principal components, the default "
+                  "when it has one) or random-phase (per-degree amplitudes only, the default otherwise)")
+      ->check(CLI::IsMember({"shape-model", "random-phase"}))
+      ->needs(spectrum);
   gen->add_option("--count", g->count, "number of grains")->check(CLI::Range(1, 1000000))->capture_default_str();
   gen->add_option("--seed", g->seed, "random seed (same seed, same grains)")->capture_default_str();
   gen->add_option("--out", g->out, "output folder (created if missing); files <preset>-0001.stl, ... (sh-0001.stl, ... from --spectrum)")->required();

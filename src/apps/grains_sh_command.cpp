@@ -12,6 +12,7 @@
 #include "grains/sh_fit.h"
 #include "grains/sh_generator.h"
 #include "grains/sh_grain.h"
+#include "grains/sh_shape_model.h"
 #include "io/sh_spectrum_file.h"
 
 #include <fmt/format.h>
@@ -49,6 +50,8 @@ struct SpectrumOptions {
   int faces = 2000;
   ShOptions sh;
   int degree = 30;
+  int model_degree = kDefaultModelDegree;
+  int components = kDefaultModelComponents;
 };
 
 // The files named, folders expanded to the files in them that `keep` accepts (sorted).
@@ -139,6 +142,7 @@ std::string toml_array(const std::vector<double>& v) {
 int run_spectrum(const SpectrumOptions& o) {
   const std::vector<fs::path> files = expand(o.inputs, is_grain_file, "grain file (.dat, .stl, .obj, .ply)");
   std::vector<std::vector<double>> amplitudes;
+  std::vector<ShCoefficients> grains;
   std::vector<double> d, r, sph, e, f, c;
   int degree = 1000;
   for (const fs::path& file : files) {
@@ -147,6 +151,7 @@ int run_spectrum(const SpectrumOptions& o) {
     const ShCoefficients coefficients =
         sh ? truncated(read_sh_file(file), o.sh.max_degree) : fit_sh(mesh, o.degree, file.string()).coefficients;
     amplitudes.push_back(sh_degree_amplitudes(coefficients));
+    grains.push_back(coefficients);
     degree = std::min(degree, coefficients.degree);
     const ShapeMetrics s = shape_metrics(mesh);
     d.push_back(s.equivalent_diameter);
@@ -177,6 +182,11 @@ int run_spectrum(const SpectrumOptions& o) {
   text += toml_stats("elongation", e, "I / L");
   text += toml_stats("flatness", f, "S / I");
   text += toml_stats("convexity", c, "volume / convex hull volume");
+  ShShapeModel model;
+  if (o.model_degree >= 0 && grains.size() >= 2) {
+    model = fit_sh_shape_model(grains, std::min(o.model_degree, degree), o.components, o.faces);
+    text += sh_model_toml(model);
+  }
   write_file_atomically(o.out, text);
   auto at = [&](int n) { return n <= degree ? fmt::format("{:.4f}", mean[n]) : std::string("-"); };
   const Stats sd = stats_of(d), sr = stats_of(r);
@@ -185,17 +195,32 @@ int run_spectrum(const SpectrumOptions& o) {
              "  A_n/A_0 at n = 2, 5, 10, 20: {}, {}, {}, {}\n",
              o.out, files.size(), sd.mean, sd.min, sd.max, sr.mean, sr.std, stats_of(sph).mean, stats_of(e).mean,
              stats_of(f).mean, stats_of(c).mean, at(2), at(5), at(10), at(20));
+  if (!model.empty()) {
+    double held = 0;
+    for (const ShCoefficients& g : grains) {
+      const std::vector<double> x = sh_real_vector(sh_aligned(truncated(g, model.degree), o.faces), model.degree);
+      std::vector<double> xn(x.size());
+      for (std::size_t j = 0; j < x.size(); ++j) xn[j] = x[j] / x[0];
+      held += (1 - unexplained_fraction(model, xn)) / grains.size();
+    }
+    fmt::print("  shape model: degrees <= {}, {} components of {} grains; the model's span holds {:.0f} % of a "
+               "grain's deviation from the mean shape (mean over the grains)\n",
+               model.degree, model.components.size(), grains.size(), 100 * held);
+  }
   return 0;
 }
 
 }  // namespace
 
-int run_generate_from_spectrum(const std::string& spectrum_file, int count, std::uint64_t seed,
-                               const std::string& out, int faces) {
+int run_generate_from_spectrum(const std::string& spectrum_file, const std::string& method_name, int count,
+                               std::uint64_t seed, const std::string& out, int faces) {
   const ShSpectrumFile file = read_sh_spectrum(spectrum_file);
   const ShSpectrum& spectrum = file.spectrum;
+  const ShMethod method = !method_name.empty()       ? parse_sh_method(method_name)
+                          : spectrum.model.empty() ? ShMethod::random_phase
+                                                   : ShMethod::shape_model;
   Stopwatch clock;
-  const ShGrains grains = generate_sh_grains(spectrum, count, seed, faces);
+  const ShGrains grains = generate_sh_grains(spectrum, count, seed, faces, method);
   const double seconds = clock.seconds();
   std::error_code ec;
   fs::create_directories(out, ec);
@@ -209,9 +234,9 @@ int run_generate_from_spectrum(const std::string& spectrum_file, int count, std:
     const double values[] = {s.roundness, s.sphericity, s.elongation, s.flatness, s.convexity};
     for (std::size_t k = 0; k < shape.size(); ++k) shape[k].push_back(values[k]);
   }
-  fmt::print("wrote {} grains of degree {} drawn from {} ({} faces each, metres, centred, principal frame) to {} in "
-             "{:.2f} s; {} draws refused for r <= 0\n",
-             count, spectrum.degree(), spectrum_file, faces, out, seconds, grains.rejected);
+  fmt::print("wrote {} grains of degree {} drawn from {} by the {} method ({} faces each, metres, centred, principal "
+             "frame) to {} in {:.2f} s; {} draws refused for r <= 0\n",
+             count, spectrum.degree(), spectrum_file, sh_method_name(method), faces, out, seconds, grains.rejected);
   const Stats sd = stats_of(d);
   fmt::print("  {:<22}{:>22}{:>22}\n", "mean (std)", "generated", "spectrum's set");
   fmt::print("  {:<22}{:>22}{:>22}\n", "d_eq (m)", fmt::format("{:.4g} ({:.3g})", sd.mean, sd.std),
@@ -293,12 +318,24 @@ Command add_grains_sh_commands(CLI::App& grains) {
       "rotation; A_2 is elongation, higher n ever finer relief), and the mean, standard deviation, minimum\n"
       "and maximum of the volume-equivalent diameter (m), roundness, sphericity, elongation, flatness and\n"
       "convexity that `grains stats` measures. SH files (.dat) are meshed at --faces; meshes are fitted\n"
-      "to --degree (as fit-sh) for the spectrum and measured as they are.");
+      "to --degree (as fit-sh) for the spectrum and measured as they are. With two grains or more it also\n"
+      "writes [model], the set's shape model for `grains generate --spectrum`: the grains turned into their\n"
+      "principal frames, their coefficients of degree <= --model-degree divided by a_00, and the mean and the\n"
+      "first --components principal components of those (with the spread of the grains' scores along each).");
   spectrum->add_option("files", so->inputs, "grain files (.dat, .stl, .obj, .ply), or folders of them")->required();
   spectrum->add_option("--out", so->out, "TOML file to write, e.g. SAND.toml")->required();
   add_sh_file_options(*spectrum, so->faces, so->sh);
   spectrum->add_option("--degree", so->degree, "degree of the fit of mesh files")
       ->check(CLI::Range(0, 100))
+      ->capture_default_str();
+  spectrum->add_option("--model-degree", so->model_degree,
+                       "highest degree K of the shape model written as [model] (the set's mean shape and principal "
+                       "components, grains aligned to their principal frames); -1: no model")
+      ->check(CLI::Range(-1, 100))
+      ->capture_default_str();
+  spectrum->add_option("--components", so->components,
+                       "principal components the model keeps (at most grains - 1); fewer keep less of each grain")
+      ->check(CLI::Range(0, 1000))
       ->capture_default_str();
 
   return [import, fit, spectrum, im, fo, so]() {

@@ -149,8 +149,11 @@ Command add_grains_index_command(CLI::App& grains) {
       "Prints the two lines own_e_min/own_e_max for the [specimen] table of a run config.");
   cmd->add_option("--config", o->config, "take grains, material, consolidation stress, numerics and seed from this "
                                          "run config (TOML); the options below override it");
-  cmd->add_option("--preset", o->preset, "grain class: glass-beads | rounded | sub-angular | angular")
-      ->check(CLI::IsMember({"glass-beads", "rounded", "sub-angular", "angular"}));
+  cmd->add_option("--preset", o->preset,
+                  "grain class: glass-beads | rounded | sub-angular | angular, or a spherical-harmonic sand: "
+                  "sh-ottawa | sh-river | sh-limestone")
+      ->check(CLI::IsMember({"glass-beads", "rounded", "sub-angular", "angular", "sh-ottawa", "sh-river",
+                             "sh-limestone"}));
   cmd->add_option("--folder", o->folder, "import the grains of this folder instead (meshes: STL/OBJ/PLY; SH files: .dat)");
   cmd->add_option("--shapes", o->shapes, "distinct grain shapes (default: the config's, 24)")->check(CLI::PositiveNumber);
   cmd->add_option("--faces", o->faces, "faces per grain shape (default: the config's, 200)")->check(CLI::Range(100, 1000000));

@@ -6,6 +6,7 @@
 #include "geometry/mesh_check.h"
 #include "geometry/shape_metrics.h"
 #include "geometry/simplify.h"
+#include "grains/sh_sands.h"
 
 #include <algorithm>
 #include <cctype>
@@ -90,6 +91,23 @@ GrainSet generate_grain_set(const GeneratorSpec& spec, int count, std::uint64_t 
       },
       1);
   for (int k = 0; k < count; ++k) set.names.push_back(fmt::format("{}-{:04d}", grain_preset_name(spec.preset), k + 1));
+  return set;
+}
+
+GrainSet generate_sh_grain_set(const std::string& name, int count, std::uint64_t seed, SieveRange sieve, int faces) {
+  const ShSand* sand = find_sh_sand(name);
+  if (!sand) input_error("unknown spherical-harmonic sand '{}': use one of {}", name, sh_sand_names());
+  validate(sieve);
+  if (count < 1) input_error("grain count must be at least 1, got {}", count);
+  Rng rng(seed);
+  const std::vector<double> sizes = sieve_sizes(sieve, count, rng);
+  ShGrains grains = generate_sh_grains(sand->spectrum, count, rng.next_u64(), faces, ShMethod::shape_model);
+  GrainSet set;
+  for (int k = 0; k < count; ++k) {
+    scale_to(grains.meshes[k], sizes[k]);
+    set.meshes.push_back(std::move(grains.meshes[k]));
+    set.names.push_back(fmt::format("{}-{:04d}", name, k + 1));
+  }
   return set;
 }
 

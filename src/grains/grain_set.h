@@ -45,6 +45,14 @@ GrainSet generate_grain_set(GrainPreset preset, int count, std::uint64_t seed, S
                             int faces = 2000);
 GrainSet generate_grain_set(const GeneratorSpec& spec, int count, std::uint64_t seed, SieveRange sieve = {});
 
+// `count` grains of an SH sand preset (sh_sands.h: "sh-ottawa", ...) drawn by
+// the shape-model method at `faces` faces (generate_sh_grains), sized over
+// the sieve range as generate_grain_set sizes them; named "<preset>-0001".
+// The same arguments give the same meshes bit for bit, whatever the thread
+// count. Throws InputError for an unknown name (listing the SH sands).
+GrainSet generate_sh_grain_set(const std::string& sand, int count, std::uint64_t seed, SieveRange sieve = {},
+                               int faces = 2000);
+
 // True for the files a grain folder holds: meshes (.stl, .obj, .ply) and
 // spherical-harmonic coefficient files (.dat, sh_grain.h), in any case.
 bool is_grain_file(const std::filesystem::path& path);

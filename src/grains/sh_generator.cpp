@@ -79,6 +79,10 @@ void validate(const ShSpectrum& s) {
                   s.std[n]);
     }
   }
+  validate(s.model);
+  if (s.model.degree > s.degree()) {
+    input_error("the shape model's degree {} is above the spectrum's {}", s.model.degree, s.degree());
+  }
   if (!(s.d_eq_min > 0 && s.d_eq_min <= s.d_eq_mean && s.d_eq_mean <= s.d_eq_max && s.d_eq_std >= 0) ||
       !std::isfinite(s.d_eq_max) || !std::isfinite(s.d_eq_std)) {
     input_error("spectrum d_eq (m) must satisfy 0 < min <= mean <= max and std >= 0, got mean {}, std {}, min {}, "
@@ -102,7 +106,28 @@ void set_random_degree(ShCoefficients& c, int n, double amplitude, Rng& rng) {
   }
 }
 
-ShCoefficients draw_sh_coefficients(const ShSpectrum& spectrum, Rng& rng) {
+const char* sh_method_name(ShMethod method) {
+  return method == ShMethod::shape_model ? "shape-model" : "random-phase";
+}
+
+ShMethod parse_sh_method(const std::string& name) {
+  for (const ShMethod m : {ShMethod::random_phase, ShMethod::shape_model}) {
+    if (name == sh_method_name(m)) return m;
+  }
+  input_error("unknown SH generation method '{}'; use \"shape-model\" (the set's principal components) or "
+              "\"random-phase\" (its per-degree amplitudes only)",
+              name);
+}
+
+ShCoefficients draw_sh_coefficients(const ShSpectrum& spectrum, Rng& rng, ShMethod method) {
+  if (method == ShMethod::shape_model) {
+    ShCoefficients c = draw_from_model(spectrum.model, spectrum.degree(), rng);
+    const double a00 = c.at(0, 0).real();
+    for (int n = spectrum.model.degree + 1; n <= c.degree; ++n) {
+      set_random_degree(c, n, a00 * lognormal(spectrum.mean[n], spectrum.std[n], rng), rng);
+    }
+    return c;
+  }
   ShCoefficients c(spectrum.degree());
   const double a00 = std::sqrt(4 * std::numbers::pi);
   c.at(0, 0) = a00;
@@ -117,8 +142,12 @@ double draw_equivalent_diameter(const ShSpectrum& spectrum, Rng& rng) {
   return std::clamp(lognormal(spectrum.d_eq_mean, spectrum.d_eq_std, rng), spectrum.d_eq_min, spectrum.d_eq_max);
 }
 
-ShGrains generate_sh_grains(const ShSpectrum& spectrum, int count, std::uint64_t seed, int faces) {
+ShGrains generate_sh_grains(const ShSpectrum& spectrum, int count, std::uint64_t seed, int faces, ShMethod method) {
   validate(spectrum);
+  if (method == ShMethod::shape_model && spectrum.model.empty()) {
+    input_error("the shape-model method needs a spectrum with a [model] (write it with `grainlab grains spectrum "
+                "--model-degree K`); this one has only per-degree amplitudes: use the random-phase method");
+  }
   if (count < 1) input_error("grain count must be at least 1, got {}", count);
   if (faces < 8) input_error("a grain mesh needs at least 8 faces, asked for {}", faces);
   Rng rng(seed);
@@ -135,14 +164,14 @@ ShGrains generate_sh_grains(const ShSpectrum& spectrum, int count, std::uint64_t
       [&](std::ptrdiff_t k) {
         Rng grain_rng(seeds[k]);
         const double d_eq = draw_equivalent_diameter(spectrum, grain_rng);
-        ShCoefficients c = draw_sh_coefficients(spectrum, grain_rng);
+        ShCoefficients c = draw_sh_coefficients(spectrum, grain_rng, method);
         TriMesh mesh;
         while (!try_mesh(c, faces, mesh)) {
           if (++rejected[k] == kMaxShDraws) {
             failed[k] = 1;
             return;
           }
-          c = draw_sh_coefficients(spectrum, grain_rng);
+          c = draw_sh_coefficients(spectrum, grain_rng, method);
         }
         const double s = d_eq / std::cbrt(6 * mass_properties(mesh).volume / std::numbers::pi);
         for (auto& a : c.a) a *= s;

@@ -47,7 +47,7 @@ const std::array kHeadFields{
     GL_FIELD("", "test", test, ""),  // its doc names the registered tests (spec_fields())
     GL_FIELD("", "seed", seed, "seed of every random choice (grain shapes, sizes, placement); same seed, same run"),
 
-    GL_FIELD("grains", "preset", grains.preset, "synthetic grain class: glass-beads | rounded | sub-angular | angular"),
+    GL_FIELD("grains", "preset", grains.preset, "synthetic grain class: glass-beads | rounded | sub-angular | angular (random rounded polytopes), or a spherical-harmonic sand drawn from the shape statistics of 16 CT-scanned grains: sh-ottawa | sh-river | sh-limestone (concave, sized to the sieve range; grains.convexity does not apply)"),
     GL_FIELD("grains", "folder", grains.folder, "if not empty: import every STL/OBJ/PLY mesh and spherical-harmonic .dat file in this folder instead of the preset"),
     GL_FIELD("grains", "shapes", grains.shapes, "number of distinct grain shapes in the library (grains reuse them, scaled)"),
     GL_FIELD("grains", "faces", grains.faces, "face budget per grain shape (>= 100)"),
@@ -125,7 +125,8 @@ constexpr std::array<SpecTable, 2> kTailTables{{
 }};
 
 // The grain classes grains/ can generate.
-constexpr std::array<std::string_view, 4> kGrainClasses{"glass-beads", "rounded", "sub-angular", "angular"};
+constexpr std::array<std::string_view, 7> kGrainClasses{"glass-beads", "rounded",   "sub-angular", "angular",
+                                                        "sh-ottawa",   "sh-river", "sh-limestone"};
 
 // The flat [material] keys of the registered laws' parameters, each key once
 // (laws that declare the same key share its value), in registry order.
@@ -444,7 +445,8 @@ void validate_spec(const LabSpec& spec_in, const std::string& source, const Line
   const bool known_class =
       std::find(kGrainClasses.begin(), kGrainClasses.end(), g.preset) != kGrainClasses.end();
   need_s(known_class || (g.preset.empty() && !g.folder.empty()), "grains.preset", g.preset,
-         "one of \"glass-beads\", \"rounded\", \"sub-angular\", \"angular\"");
+         "one of \"glass-beads\", \"rounded\", \"sub-angular\", \"angular\" (polytopes) or \"sh-ottawa\", "
+         "\"sh-river\", \"sh-limestone\" (spherical-harmonic sands)");
   if (!g.folder.empty()) {
     std::error_code ec;
     if (!std::filesystem::is_directory(g.folder, ec)) {

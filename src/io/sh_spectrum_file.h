@@ -6,6 +6,10 @@
 //   [shape]     equivalent_diameter_m = { mean, std, min, max } (m), and the
 //               same table for roundness, sphericity, elongation, flatness,
 //               convexity (optional here: only reported beside a generated set)
+//   [model]     optional, the set's shape model (grains/sh_shape_model.h):
+//               degree = K (<= [set] degree), mean = [(K + 1)^2 numbers],
+//               sigma = [k numbers], residual = [K + 1 numbers],
+//               components = [[(K + 1)^2 numbers], ...] (k arrays)
 #pragma once
 
 #include "grains/sh_generator.h"
@@ -32,6 +36,12 @@ inline constexpr const char* kSpectrumShapeKeys[] = {"roundness", "sphericity", 
 // std, [shape] equivalent_diameter_m's mean, std, min and max), a value of
 // the wrong type, arrays whose length is not degree + 1, a negative or
 // non-finite amplitude, or d_eq values that are not 0 < min <= mean <= max.
+// A [model] with a wrong length, a component not of unit length or a
+// negative spread is refused the same way.
 ShSpectrumFile read_sh_spectrum(const std::filesystem::path& path);
+
+// The [model] table of a spectrum file for `model` (with its header line and
+// a comment saying what it holds); "" for an empty model.
+std::string sh_model_toml(const ShShapeModel& model);
 
 }  // namespace grainlab

@@ -8,6 +8,7 @@
 #include "geometry/convex_hull.h"
 #include "geometry/mass_properties.h"
 #include "grains/grain_set.h"
+#include "grains/sh_sands.h"
 
 #include <cmath>
 #include <numbers>
@@ -23,6 +24,7 @@ bool collides_as_pieces(const std::string& representation, double convexity) {
 GrainSet make_grain_set(const GrainsSpec& spec, std::uint64_t seed) {
   const SieveRange sieve{spec.d_min, spec.d_max};
   if (!spec.folder.empty()) return import_grain_set(spec.folder, spec.faces, sieve);
+  if (find_sh_sand(spec.preset)) return generate_sh_grain_set(spec.preset, spec.shapes, seed, sieve, spec.faces);
   GeneratorSpec g = preset_spec(parse_grain_preset(spec.preset));
   g.faces = spec.faces;
   g.convexity = spec.convexity;

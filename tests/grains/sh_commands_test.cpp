@@ -167,6 +167,24 @@ TEST(ShCommands, GenerateFromASpectrumWritesTheSameGrainsForTheSameSeedAndRefuse
     EXPECT_EQ(slurp(dir / "one" / f), slurp(dir / "two" / f)) << f;
     EXPECT_EQ(load_mesh(dir / "one" / f).faces.size(), 300u);
   }
+  // The file holds the set's shape model, which generate uses unless told otherwise.
+  EXPECT_CONTAINS(slurp(dir / "sand.toml"), "[model]\n");
+  EXPECT_CONTAINS(log, "by the shape-model method");
+  ASSERT_EQ(grainlab(dir, args + (dir / "phases").string() + " --method random-phase"), 0);
+  EXPECT_CONTAINS(slurp(dir / "log.txt"), "by the random-phase method");
+  EXPECT_NE(slurp(dir / "one" / "sh-0001.stl"), slurp(dir / "phases" / "sh-0001.stl"));
+  // Without a model (an older file), random-phase is the default and shape-model is refused.
+  const std::string plain = (dir / "plain.toml").string();
+  ASSERT_EQ(grainlab(dir, "grains spectrum " + (dir / "a.dat").string() + " " + (dir / "b.dat").string() +
+                              " --faces 500 --model-degree -1 --out " + plain),
+            0);
+  EXPECT_EQ(slurp(plain).find("[model]"), std::string::npos);
+  const std::string plain_args = "grains generate --spectrum " + plain + " --count 3 --faces 300 --seed 4 --out ";
+  ASSERT_EQ(grainlab(dir, plain_args + (dir / "old").string()), 0);
+  EXPECT_CONTAINS(slurp(dir / "log.txt"), "by the random-phase method");
+  EXPECT_EQ(slurp(dir / "old" / "sh-0001.stl"), slurp(dir / "phases" / "sh-0001.stl"));
+  EXPECT_NE(grainlab(dir, plain_args + (dir / "four").string() + " --method shape-model"), 0);
+  EXPECT_CONTAINS(slurp(dir / "log.txt"), "needs a spectrum with a [model]");
   EXPECT_NE(grainlab(dir, args + (dir / "three").string() + " --preset rounded"), 0);
   EXPECT_CONTAINS(slurp(dir / "log.txt"), "excludes");
   EXPECT_NE(grainlab(dir, args + (dir / "three").string() + " --roundness 0.5"), 0);

@@ -153,6 +153,13 @@ preset = "rounded"
   EXPECT_EQ(t.material.grain.friction, 0.28);
 }
 
+TEST(Config, SphericalHarmonicSandsAreGrainPresets) {
+  for (const char* sand : {"sh-ottawa", "sh-river", "sh-limestone"}) {
+    EXPECT_EQ(parse_config(fmt::format("[grains]\npreset = \"{}\"\n", sand), "sh.toml").grains.preset, sand);
+  }
+  EXPECT_EQ(LabSpec{}.grains.preset, "rounded");  // the default stays the polytope preset
+}
+
 TEST(Config, IntegersAreAcceptedForNumbers) {
   const LabSpec s = parse_config("[consolidation]\nnormal_stress = 50000\n[material]\ndensity = 2600\n", "i.toml");
   EXPECT_EQ(s.consolidation.normal_stress, 50000.0);

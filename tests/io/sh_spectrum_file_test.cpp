@@ -65,5 +65,49 @@ TEST(ShSpectrumFile, RefusesBadFilesNamingFileLineAndKey) {
                   "spectrum file '" + (dir / "none.toml").string() + "' does not exist");
 }
 
+// A model of degree 1 with two components (unit vectors of 4 numbers).
+ShShapeModel small_model() {
+  ShShapeModel m;
+  m.degree = 1;
+  m.mean = {1, 0.01, -0.02, 0.003};
+  m.components = {{0, 0.6, 0.8, 0}, {0, 0, 0, 1}};
+  m.sigma = {0.05, 0.01};
+  m.residual = {0, 0.002};
+  return m;
+}
+
+TEST(ShSpectrumFile, ModelRoundTripsThroughTheFile) {
+  test::TempDir dir;
+  const ShShapeModel m = small_model();
+  const ShSpectrumFile f = read_sh_spectrum(write(dir, kGood + sh_model_toml(m)));
+  const ShShapeModel& r = f.spectrum.model;
+  EXPECT_EQ(r.degree, 1);
+  EXPECT_EQ(r.mean, m.mean);
+  EXPECT_EQ(r.sigma, m.sigma);
+  EXPECT_EQ(r.residual, m.residual);
+  EXPECT_EQ(r.components, m.components);
+  EXPECT_TRUE(read_sh_spectrum(write(dir, kGood)).spectrum.model.empty());  // a file without [model]
+  EXPECT_EQ(sh_model_toml(ShShapeModel{}), "");
+}
+
+TEST(ShSpectrumFile, RefusesBadModelsNamingFileLineAndKey) {
+  test::TempDir dir;
+  const std::string good = kGood + sh_model_toml(small_model());
+  const auto error = [&](const std::string& text) {
+    return test::input_error_of([&] { read_sh_spectrum(write(dir, text)); });
+  };
+  EXPECT_CONTAINS(error(replaced(good, "mean = [1, 0.01, -0.02, 0.003]", "mean = [1, 0.01, -0.02]")),
+                  "sand.toml:22: [model] mean has 3 values but [model] degree = 1");
+  EXPECT_CONTAINS(error(replaced(good, "sigma = [0.05, 0.01]", "sigma = [0.05, -0.01]")),
+                  "[model] sigma[1] = -0.01 is negative");
+  EXPECT_CONTAINS(error(replaced(good, "[0, 0.6, 0.8, 0]", "[0, 0.6, 0.9, 0]")),
+                  "sand.toml:21: [model]: shape model component 0 has length");
+  EXPECT_CONTAINS(error(replaced(good, "sigma = [0.05, 0.01]", "sigma = [0.05]")),
+                  "[model] components must be an array of 1 arrays");
+  EXPECT_CONTAINS(error(replaced(good, "residual = [0, 0.002]\n", "")), "missing key `residual` in [model]");
+  EXPECT_CONTAINS(error(replaced(good, "degree = 1", "degree = 4")), "[model] degree must be an integer in 0..3");
+  EXPECT_CONTAINS(error(replaced(good, "[0, 0, 0, 1]", "[0, 0, nan, 1]")), "is not a finite number");
+}
+
 }  // namespace
 }  // namespace grainlab
