@@ -134,3 +134,10 @@ def test_a_bad_resume_is_refused_as_by_the_command_line(tmp_path):
     config = grainlab.Config.from_dict(tiny_config(tmp_path / "none"))
     with pytest.raises(grainlab.ConfigError, match="--resume: no checkpoint"):
         grainlab.run(config, resume=True)
+
+
+def test_report_writes_the_command_lines_html(python_run):
+    run, _ = python_run
+    index = run.report()
+    assert index == run.folder / "report" / "index.html" and index.is_file()
+    assert "stress_ratio.png" in index.read_text(encoding="utf-8")
