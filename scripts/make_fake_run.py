@@ -34,7 +34,7 @@ shows.
 
 A triaxial run (--test triaxial) is series.csv (the columns of
 src/lab/triaxial.cpp triaxial_series_columns(), one row per 0.1 % of axial
-strain to 15 %) and run.json (the keys src/apps/run_command.cpp writes, with
+strain to 15 %) and run.json (the keys src/apps/run_lab.cpp writes, with
 config.test = "triaxial", config.consolidation.normal_stress = sigma_3 and
 the "triaxial" summary of src/lab/triaxial.cpp, computed from the rows by a
 port of summarise_triaxial). Its peak q/p' lies exactly on the Mohr-Coulomb

@@ -19,7 +19,7 @@ packages=(
   libinsighttoolkit5-dev # ITK 5.2: CT image formats, distance map, h-maxima and watershed (src/ct only)
   libomp-dev             # OpenMP (gcc ships its own libgomp; this is for clang)
   python3 python3-matplotlib  # report plots
-  pybind11-dev python3-pybind11  # the Python module (import grainlab)
+  pybind11-dev python3-pybind11 python3-dev  # the Python module (import grainlab; Python.h)
   python3-numpy python3-pandas   # series as arrays and DataFrames
   python3-distributed python3-tqdm  # sweeps on Dask, progress bars
   python3-pytest python3-nbconvert python3-nbformat python3-nbclient python3-ipykernel  # Python tests, the example notebook

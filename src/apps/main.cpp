@@ -4,7 +4,7 @@
 // with what, where and how to fix it; and what went to standard output is
 // flushed and checked before exiting, so that output lost to a full disk or a
 // closed pipe is an error, not a silent exit 0.
-#include "apps/commands.h"
+#include "apps/command_line.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/wait_policy.h"
@@ -18,7 +18,6 @@
 #include <filesystem>
 #include <new>
 #include <system_error>
-#include <vector>
 
 using namespace grainlab;
 
@@ -44,13 +43,9 @@ int checked_exit(int rc) {
   return rc;
 }
 
-int run_commands(const std::vector<apps::Command>& commands) {
+int run_command(const apps::CommandLine& command_line) {
   try {
-    for (const auto& run : commands) {
-      const int rc = run();
-      if (rc >= 0) return rc;
-    }
-    return 0;
+    return command_line.run();
   } catch (const InputError& e) {
     return error(2, fmt::format("error: {}", e.what()));
   } catch (const RunError& e) {
@@ -79,19 +74,11 @@ int main(int argc, char** argv) {
   use_passive_wait_by_default(argv);
   // Past the file-size limit a write fails with EFBIG and is reported; by default SIGXFSZ would kill silently.
   std::signal(SIGXFSZ, SIG_IGN);
-  CLI::App app{
-      "grainlab: a discrete-element engine and virtual soil laboratory for realistic sand "
-      "grains.\nSI units throughout (m, kg, s, N, Pa)."};
-  app.require_subcommand(1);
-
-  const std::vector<apps::Command> commands = {apps::add_grains_command(app),
-                                               apps::add_run_command(app), apps::add_report_command(app),
-                                               apps::add_ct_command(app), apps::add_sweep_command(app)};
-
+  apps::CommandLine command_line;
   try {
-    app.parse(argc, argv);
+    command_line.app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return checked_exit(app.exit(e));
+    return checked_exit(command_line.app.exit(e));
   }
-  return checked_exit(run_commands(commands));
+  return checked_exit(run_command(command_line));
 }

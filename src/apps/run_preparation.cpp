@@ -34,7 +34,7 @@ PreparedRun prepare_run(const LabSpec& spec, const fs::path& out, bool resume,
     return run;
   }
   if (!spec.specimen.from.empty()) {
-    // Another run's prepared specimen: nothing to prepare here (run_command
+    // Another run's prepared specimen: nothing to prepare here (run_lab
     // loads it); its preparation record, beside it, says how it was made.
     const fs::path from = spec.specimen.from;
     if (!fs::is_regular_file(from))
