@@ -426,6 +426,9 @@ bool same_set(const std::vector<Index>& now, const std::vector<Index>& kept, std
   return true;
 }
 
+// No fill where the largest skin would last fewer calls (a falling grain).
+constexpr std::uint32_t kMinPredicted = 4;
+
 enum class Use { kPlain, kCached, kFill };
 
 // What this call does with the pair's cache (patch_cache.h): reuse it
@@ -481,6 +484,14 @@ Use plan(PatchCache& c, const PolytopeShape& a, const PolytopeShape& b, const st
   }
   const double skin = std::clamp(2.0 * rate * PatchCache::kTargetUses, PatchCache::kMinSkin * size,
                                  PatchCache::kMaxSkin * size);
+  // A pair too fast for the largest skin to last kMinPredicted calls (a
+  // falling grain) does not fill: it backs off as a fill that served nothing.
+  if (skin < 2.0 * rate * kMinPredicted) {
+    c.fails = std::min(c.fails + 1, 6u);
+    c.skip = std::min(PatchCache::kMaxSkip, 1u << c.fails);
+    c.phase = PatchCache::Phase::kCold;
+    return Use::kPlain;
+  }
   for (int i = 0; i < 2; ++i) {
     PatchCache::Side& side = c.side[i];
     side.skin = skin / o[i]->scale;
