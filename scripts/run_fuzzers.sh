@@ -10,10 +10,12 @@
 # inputs that reach new code to BUILD_DIR/fuzz-corpus/NAME (the repository's
 # corpus holds seeds and regression inputs only). A finding (crash, sanitizer
 # report, escaped exception, a hang over 10 s, an allocation over 1 GiB, a
-# leak) is written to BUILD_DIR/fuzz-findings/NAME-*: reproduce it with
+# leak; those inside assimp are suppressed: tests/fuzz/lsan_suppressions.txt)
+# is written to BUILD_DIR/fuzz-findings/NAME-*: reproduce it with
 # `BUILD_DIR/fuzz_NAME FILE`, fix it, and add the file to the corpus. Prints a
 # line per harness (executions, seconds, corpus size, findings); exit 1 when
-# any harness found something. Runs at nice 19 (a shared machine).
+# any harness found something. Runs at nice 19 (a shared machine; FUZZ_NICE
+# sets another niceness).
 set -u
 build=${1:?usage: scripts/run_fuzzers.sh BUILD_DIR [SECONDS_EACH [MAX_RUNS [HARNESS...]]]}
 seconds=${2:-300}
@@ -33,7 +35,7 @@ for name in $names; do
   mkdir -p "$build/fuzz-corpus/$name"
   log=$build/fuzz-findings/$name.log
   before=$(ls "$build/fuzz-findings" | grep -c "^$name-")
-  nice -n 19 "$bin" "$build/fuzz-corpus/$name" "$root/tests/fuzz/corpus/$name" \
+  LSAN_OPTIONS=suppressions=$root/tests/fuzz/lsan_suppressions.txt nice -n "${FUZZ_NICE:-19}" "$bin" "$build/fuzz-corpus/$name" "$root/tests/fuzz/corpus/$name" \
     -max_total_time="$seconds" -runs="$runs" -timeout=10 -malloc_limit_mb=1024 -rss_limit_mb=2048 \
     -detect_leaks=1 -print_final_stats=1 -artifact_prefix="$build/fuzz-findings/$name-" > "$log" 2>&1
   rc=$?
