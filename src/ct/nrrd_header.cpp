@@ -103,12 +103,18 @@ NrrdHeader read_nrrd_header(const fs::path& path) {
   }
   NrrdHeader h;
   h.header_bytes = line.size() + 1;
-  while (bounded_getline(in, line, kMaxHeaderLine, path.string(), "an NRRD header")) {
+  for (int line_number = 2; bounded_getline(in, line, kMaxHeaderLine, path.string(), "an NRRD header");
+       ++line_number) {
     h.header_bytes += line.size() + 1;
     if (trim(line).empty()) break;  // the blank line before attached data
     if (line[0] == '#' || line.find(":=") != std::string::npos) continue;  // comments, key/value pairs
     const auto colon = line.find(": ");
-    if (colon == std::string::npos) continue;
+    // Every other line is a field, "name: value". A line of neither made
+    // ITK's NRRD reader (teem) overflow a buffer and abort (found by fuzzing).
+    if (colon == std::string::npos)
+      input_error("'{}': NRRD header line {} ('{}') is neither a field ('name: value'), a comment ('#') nor a "
+                  "key/value pair ('key:=value'); the file is damaged, write it again",
+                  path.string(), line_number, excerpt(line, 60));
     std::string name;
     for (char c : lower(line.substr(0, colon))) {
       if (c != ' ') name += c;

@@ -86,5 +86,14 @@ TEST_F(CtHeaderBounds, AHeaderLineOverItsBoundIsRefusedBeforeItIsReadWhole) {
       << msg;
 }
 
+// A header line that is no field, comment or key/value pair made ITK's NRRD
+// reader overflow a buffer and abort the process (found by fuzzing).
+TEST_F(CtHeaderBounds, AnNrrdHeaderLineOfNoFieldIsRefused) {
+  const std::string msg = refusal(write("line.nrrd", "NRRD0004\ntype unsigned char\ndimension: 3\n\n"));
+  EXPECT_NE(msg.find("NRRD header line 2 ('type unsigned char') is neither a field ('name: value')"),
+            std::string::npos)
+      << msg;
+}
+
 }  // namespace
 }  // namespace grainlab::ct
