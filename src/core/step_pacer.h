@@ -5,6 +5,8 @@
 // 1000 beads thousands), while fast runs still check rarely. The chunk
 // changes only where a loop pauses, never what the steps compute: every
 // protocol's advance(n) decides by step counts, so resume stays bit-identical.
+// A period of infinity keeps every chunk at `max_steps` (after the first):
+// tests that stop a loop at a given step use it.
 #pragma once
 
 #include "core/timer.h"
@@ -16,7 +18,9 @@ namespace grainlab {
 
 class StepPacer {
  public:
-  explicit StepPacer(int max_steps = 200, double period_s = 0.25) : max_(max_steps), period_(period_s) {}
+  // `first_steps`: the first chunk, before any speed is measured.
+  explicit StepPacer(int max_steps = 200, double period_s = 0.25, int first_steps = 1)
+      : max_(max_steps), period_(period_s), chunk_(first_steps) {}
 
   // Steps for the next chunk; call done() after it with the steps it took.
   int next() {
@@ -32,7 +36,7 @@ class StepPacer {
  private:
   int max_;
   double period_;
-  int chunk_ = 1;  // the first chunk measures the speed
+  int chunk_;
   Stopwatch clock_;
 };
 

@@ -1,5 +1,6 @@
 #include "ct/metaimage_header.h"
 
+#include "core/bounded_line.h"
 #include "ct/declared_data.h"
 
 #include <fmt/format.h>
@@ -36,7 +37,8 @@ void check_metaimage_data_size(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
   std::map<std::string, std::string> fields;
   std::uint64_t header_bytes = 0;
-  for (std::string line; std::getline(in, line);) {
+  constexpr std::size_t kMaxHeaderLine = 64 * 1024;  // a header line: a key and a few numbers or a file name
+  for (std::string line; bounded_getline(in, line, kMaxHeaderLine, path.string(), "a MetaImage header");) {
     header_bytes += line.size() + 1;
     const auto eq = line.find('=');
     if (eq == std::string::npos) continue;

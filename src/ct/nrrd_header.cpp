@@ -1,5 +1,6 @@
 #include "ct/nrrd_header.h"
 
+#include "core/bounded_line.h"
 #include "core/error.h"
 #include "ct/declared_data.h"
 
@@ -14,6 +15,12 @@ namespace grainlab::ct {
 namespace fs = std::filesystem;
 
 namespace {
+
+constexpr std::size_t kMaxHeaderLine = 64 * 1024;  // a header line: a field and a few numbers or a file name
+
+// deflate (gzip) turns one byte into at most 1032 (its longest match, 258
+// bytes, costs at least 2 bits): a bound on what compressed data can hold.
+constexpr std::uint64_t kDeflateMaxRatio = 1032;
 
 std::string lower(std::string s) {
   for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -88,19 +95,26 @@ double metres_per_unit(const std::string& unit) {
 NrrdHeader read_nrrd_header(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
   std::string line;
-  if (!in || !std::getline(in, line) || line.rfind("NRRD000", 0) != 0) {
+  if (!in || !bounded_getline(in, line, kMaxHeaderLine, path.string(), "an NRRD header") ||
+      line.rfind("NRRD000", 0) != 0) {
     input_error("'{}' is not an NRRD file: it does not start with the NRRD magic line (\"NRRD0004\"); check the "
                 "file, or its extension",
                 path.string());
   }
   NrrdHeader h;
   h.header_bytes = line.size() + 1;
-  while (std::getline(in, line)) {
+  for (int line_number = 2; bounded_getline(in, line, kMaxHeaderLine, path.string(), "an NRRD header");
+       ++line_number) {
     h.header_bytes += line.size() + 1;
     if (trim(line).empty()) break;  // the blank line before attached data
     if (line[0] == '#' || line.find(":=") != std::string::npos) continue;  // comments, key/value pairs
     const auto colon = line.find(": ");
-    if (colon == std::string::npos) continue;
+    // Every other line is a field, "name: value". A line of neither made
+    // ITK's NRRD reader (teem) overflow a buffer and abort (found by fuzzing).
+    if (colon == std::string::npos)
+      input_error("'{}': NRRD header line {} ('{}') is neither a field ('name: value'), a comment ('#') nor a "
+                  "key/value pair ('key:=value'); the file is damaged, write it again",
+                  path.string(), line_number, excerpt(line, 60));
     std::string name;
     for (char c : lower(line.substr(0, colon))) {
       if (c != ' ') name += c;
@@ -143,8 +157,47 @@ NrrdUnits nrrd_units(const NrrdHeader& h, const fs::path& path) {
   return u;
 }
 
+// An encoded (not raw) NRRD's data against the least room it needs: gzip
+// data holds at most kDeflateMaxRatio bytes per byte, ASCII at least one
+// character and a separator per value, hex two characters per byte; so a
+// header that claims more than its file can hold is refused before ITK
+// allocates the image it describes. bzip2 and zrl have no such cheap bound
+// (`ct segment` still checks the image against the machine's memory).
+void check_encoded_data_size(const NrrdHeader& h, const fs::path& path, const std::string& encoding) {
+  const int bytes = type_bytes(field(h, "type"));
+  const std::uint64_t need = bytes ? declared_bytes(field(h, "sizes"), bytes) : 0;
+  if (need == 0 || !field(h, "datafile").empty()) return;  // ITK names the problem; detached: left to ITK
+  std::error_code ec;
+  const std::uint64_t file = fs::file_size(path, ec);
+  if (ec) return;
+  const std::uint64_t have = file > h.header_bytes ? file - h.header_bytes : 0;
+  const std::uint64_t values = need / static_cast<std::uint64_t>(bytes);
+  std::uint64_t least = 0;  // bytes of encoded data the header's image needs at least
+  std::string why;
+  if (encoding == "gzip" || encoding == "gz") {
+    least = need / kDeflateMaxRatio;
+    why = fmt::format("gzip packs at most {} bytes into one", kDeflateMaxRatio);
+  } else if (encoding == "ascii" || encoding == "text" || encoding == "txt") {
+    least = 2 * values - 1;
+    why = "each value takes a digit and a separator";
+  } else if (encoding == "hex") {
+    least = 2 * need;
+    why = "each byte takes two hex digits";
+  } else {
+    return;
+  }
+  if (have >= least) return;
+  input_error("'{}' (NRRD, {} encoding) cannot hold the image its header describes: 'sizes: {}' of 'type: {}' ({} "
+              "bytes) need at least {} bytes of encoded data ({}), but the file holds {} after its header; copy the "
+              "file again, or fix 'sizes' and 'type' in the header",
+              path.string(), encoding, excerpt(field(h, "sizes")), excerpt(field(h, "type")), need, least, why, have);
+}
+
 void check_nrrd_data_size(const NrrdHeader& h, const fs::path& path) {
-  if (lower(field(h, "encoding")) != "raw") return;
+  if (const std::string encoding = lower(field(h, "encoding")); encoding != "raw") {
+    check_encoded_data_size(h, path, encoding);
+    return;
+  }
   const int bytes = type_bytes(field(h, "type"));
   if (bytes == 0) return;  // ITK names an unknown type
   const std::uint64_t need = declared_bytes(field(h, "sizes"), bytes);

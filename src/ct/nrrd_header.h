@@ -27,7 +27,8 @@ struct NrrdHeader {
   std::uint64_t header_bytes = 0;             // bytes up to and including the blank line ending the header
 };
 
-// Reads the text header of an .nrrd or .nhdr file. Throws InputError naming
+// Reads the text header of an .nrrd or .nhdr file (lines of at most 64 KiB:
+// a longer one is refused before it is read whole). Throws InputError naming
 // the file when it does not start with the "NRRD000x" magic.
 NrrdHeader read_nrrd_header(const std::filesystem::path& path);
 
@@ -49,8 +50,10 @@ NrrdUnits nrrd_units(const NrrdHeader& header, const std::filesystem::path& path
 double metres_per_unit(const std::string& unit);
 
 // For raw encoding, throws InputError when the data bytes differ from what
-// "sizes" and "type" describe (both figures, and what to fix). Other encodings
-// (gzip, ascii, ...) are left to ITK's reader.
+// "sizes" and "type" describe (both figures, and what to fix). For gzip, ascii
+// and hex, when the data is too short to hold them even at the encoding's
+// densest (gzip: 1032 bytes per byte), so that ITK never allocates an image a
+// small file only claims; bzip2 and zrl are left to ITK's reader.
 void check_nrrd_data_size(const NrrdHeader& header, const std::filesystem::path& path);
 
 }  // namespace grainlab::ct

@@ -17,6 +17,7 @@
 #include "geometry/mesh_io.h"
 
 #include "core/atomic_file.h"
+#include "core/bounded_line.h"
 #include "core/bounded_read.h"
 #include "core/error.h"
 
@@ -37,6 +38,7 @@
 #include <map>
 #include <sstream>
 #include <system_error>
+#include <utility>
 
 namespace grainlab {
 namespace {
@@ -110,17 +112,30 @@ void validate_ply(const std::filesystem::path& path, std::uintmax_t size) {
     elements.push_back(e);
   };
   Element current;
-  bool open_element = false;
-  while (header < 65536 && std::getline(in, line)) {
+  bool open_element = false, first_line = true;
+  while (header < 65536 && bounded_getline(in, line, 65536, name, "a PLY header")) {
     header += line.size() + 1;
     if (!line.empty() && line.back() == '\r') line.pop_back();
     std::istringstream words(line);
     std::string word;
     words >> word;
+    // Not a PLY file at all (no "ply" first): assimp says it cannot parse it.
+    if (std::exchange(first_line, false) && word != "ply") return;
+    // A header line of no PLY keyword, or an unknown format, made assimp's
+    // reader loop for minutes (found by fuzzing): refused here.
     if (word == "format") {
       std::string f;
       words >> f;
+      if (f != "ascii" && f != "binary_little_endian" && f != "binary_big_endian")
+        input_error("mesh '{}': PLY format '{}' is none of ascii, binary_little_endian, binary_big_endian; the file "
+                    "is damaged, re-export the mesh",
+                    name, excerpt(f, 40));
       ascii = f == "ascii";
+    } else if (!word.empty() && word != "element" && word != "property" && word != "comment" && word != "obj_info" &&
+               word != "end_header" && word != "ply") {
+      input_error("mesh '{}': PLY header line '{}' starts with no PLY keyword (format, element, property, comment, "
+                  "obj_info, end_header); the file is damaged, re-export the mesh",
+                  name, excerpt(line, 80));
     } else if (word == "element") {
       if (open_element) add(current);
       current = {};
@@ -192,11 +207,22 @@ TriMesh read_mesh(const std::filesystem::path& path) {
                 name, importer.GetErrorString(), ext.substr(1));
   }
   // A face of no index (a crafted PLY) makes assimp's triangulation abort the
-  // process (an assertion): refuse it before triangulating.
-  for (unsigned mi = 0; mi < scene->mNumMeshes; ++mi)
-    for (unsigned f = 0; f < scene->mMeshes[mi]->mNumFaces; ++f)
-      if (scene->mMeshes[mi]->mFaces[f].mNumIndices == 0)
+  // process (an assertion), and one whose index is past the mesh's vertices
+  // (assimp's PLY reader does not check) made it read out of bounds (a
+  // crash, found by fuzzing): refuse both before triangulating.
+  for (unsigned mi = 0; mi < scene->mNumMeshes; ++mi) {
+    const aiMesh* am = scene->mMeshes[mi];
+    for (unsigned f = 0; f < am->mNumFaces; ++f) {
+      const aiFace& af = am->mFaces[f];
+      if (af.mNumIndices == 0)
         input_error("mesh '{}': face {} has no vertex; the file is damaged, re-export the mesh", name, f + 1);
+      for (unsigned k = 0; k < af.mNumIndices; ++k)
+        if (af.mIndices[k] >= am->mNumVertices)
+          input_error("mesh '{}': face {} names vertex {}, but the mesh has {} vertices; the file is damaged, "
+                      "re-export the mesh",
+                      name, f + 1, af.mIndices[k], am->mNumVertices);
+    }
+  }
   scene = importer.ApplyPostProcessing(aiProcess_Triangulate);
   if (scene == nullptr) {
     input_error("mesh '{}': cannot be triangulated ({}); re-export it as triangles", name, importer.GetErrorString());

@@ -1,16 +1,18 @@
 // Reading a segmented scan (see scanned_grains.h).
 #include "grains/scanned_grains.h"
 
+#include "core/bounded_read.h"
 #include "core/error.h"
 #include "geometry/mesh_check.h"
 
 #include <algorithm>
-#include <fstream>
 #include <sstream>
 
 namespace grainlab {
 
 namespace {
+
+constexpr std::uintmax_t kMaxGrainTableBytes = 256 * kMiB;
 
 std::vector<std::string> split_csv(const std::string& line) {
   std::vector<std::string> out;
@@ -27,11 +29,15 @@ std::vector<std::string> split_csv(const std::string& line) {
 
 ScannedGrains read_scanned_grains(const std::filesystem::path& dir, bool keep_border) {
   const std::filesystem::path csv = dir / "grains.csv";
-  std::ifstream in(csv);
-  if (!in)
+  std::error_code ec;
+  if (!std::filesystem::exists(csv, ec))
     input_error("{}: no such file; grains.scan must be a folder written by `grainlab ct segment IMAGE --out DIR` "
                 "(one mesh per grain and grains.csv)",
                 csv.string());
+  // Read whole, its size bounded first (a device or a runaway file is refused
+  // before memory is touched): some 150 bytes a grain, so 256 MiB holds over a
+  // million grains.
+  std::istringstream in(read_bounded_file(csv, kMaxGrainTableBytes, "grain table"));
   std::string line;
   if (!std::getline(in, line)) input_error("{}: empty file; segment the scan again with `grainlab ct segment`", csv.string());
   const std::vector<std::string> header = split_csv(line);

@@ -21,7 +21,9 @@ struct ScannedGrains {
 // every mesh it names (load_mesh: checked and repaired). Grains with
 // border = 1 are cut by the image's faces: dropped unless keep_border.
 // Throws InputError naming the file, the line and the fix for a missing
-// folder, file or column, or a bad value.
+// folder, file or column, or a bad value, and for a grains.csv that is no
+// regular file (a device, a FIFO) or holds more than 256 MiB (checked before
+// it is read).
 ScannedGrains read_scanned_grains(const std::filesystem::path& dir, bool keep_border);
 
 }  // namespace grainlab

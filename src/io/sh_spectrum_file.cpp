@@ -108,12 +108,13 @@ std::string numbers_toml(const std::vector<double>& v) {
 
 ShSpectrumFile read_sh_spectrum(const std::filesystem::path& path) {
   const std::string file = path.string();
-  if (!std::filesystem::is_regular_file(path)) input_error("spectrum file '{}' does not exist; {}", file, kHowToMake);
+  std::error_code ec;  // a device or a folder is refused by read_bounded_file, saying what it is
+  if (!std::filesystem::exists(path, ec)) input_error("spectrum file '{}' does not exist; {}", file, kHowToMake);
   toml::table root;
   try {
     root = toml::parse(read_bounded_file(path, 4 * kMiB, "spectrum file"), file);
   } catch (const toml::parse_error& e) {
-    input_error("{}:{}: TOML syntax error: {}", file, e.source().begin.line, e.description());
+    input_error("{}:{}: TOML syntax error: {}", file, e.source().begin.line, excerpt(e.description(), 300));
   }
   const Reader r{file, root};
   ShSpectrumFile out;

@@ -60,8 +60,11 @@ IndexPreparation prepare_index_specimen(const LabSpec& spec, const IndexDensityO
   const PreparationPhase goal = dense ? PreparationPhase::Consolidate : PreparationPhase::Compact;
   const std::int64_t cap = std::min<std::int64_t>(o.max_steps, 399000);
   std::int64_t next_line = (w.state.step / 10000 + 1) * 10000;
+  StepPacer pacer = batch_pacer(store);  // a stop is seen within about a quarter second
   while (t.phase() < goal && w.state.step - t.phase_step(t.phase()) < cap) {
-    t.advance(100);  // a stop is asked for every 100 steps: 30 s in a bed of angular grains
+    const std::int64_t before = w.state.step;
+    t.advance(pacer.next());
+    pacer.done(w.state.step - before);
     if (store)
       store->keep_if_due(t, kept, s, earlier_s + clock.seconds(), since_kept, [&] {
         return fmt::format("the {} preparation of seed {} was stopped at step {} and kept (the run goes on from "

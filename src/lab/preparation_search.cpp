@@ -52,9 +52,12 @@ std::unique_ptr<SpecimenPreparation> trial_preparation(const LabSpec& spec, doub
                      t->world().state.step, t->phase_name(), kept_s));
   bool stepped = false;
   std::int64_t next_line = (t->world().state.step / 10000 + 1) * 10000;
+  StepPacer pacer = batch_pacer(store);  // a stop is seen within about a quarter second
   try {
     while (t->phase() < PreparationPhase::Consolidate) {
-      t->advance(100);
+      const std::int64_t before = t->world().state.step;
+      t->advance(pacer.next());
+      pacer.done(t->world().state.step - before);
       stepped = true;
       if (said && t->world().state.step >= next_line) {  // a trial of angular grains runs for hours
         next_line += 10000;

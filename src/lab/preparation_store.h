@@ -8,10 +8,12 @@
 // apps keeps them as checkpoint files in the run folder (io/kept_preparations.h).
 #pragma once
 
+#include "core/step_pacer.h"
 #include "core/timer.h"
 #include "lab/lab_spec.h"
 
 #include <functional>
+#include <limits>
 #include <string>
 
 namespace grainlab {
@@ -37,6 +39,12 @@ class PreparationStore {
   // kept and Stopped (core/error.h) thrown.
   virtual bool stop_requested() const { return false; }
   double keep_interval_s = 600;  // s of wall-clock time between keeps
+  // s of wall-clock time between looks at stop_requested(): a preparation
+  // steps in batches sized to it (core/step_pacer.h), of 100 steps at most,
+  // so a stop signal is seen within a fraction of a second even where 100
+  // steps take seconds. Infinity: a batch is always 100 steps (tests that stop
+  // at a given step).
+  double stop_check_period_s = 0.25;
 
   // Between batches of a preparation's steps: when a stop is asked for,
   // keeps it and throws Stopped(stopped()); else keeps it if
@@ -45,5 +53,12 @@ class PreparationStore {
   void keep_if_due(const SpecimenPreparation& preparation, const std::string& name, const LabSpec& prepared,
                    double wall_s, Stopwatch& since_kept, const std::function<std::string()>& stopped);
 };
+
+// The pacer of the batches of steps of a preparation kept in `store` (see
+// stop_check_period_s); batches of 100 steps when there is no store.
+inline StepPacer batch_pacer(const PreparationStore* store) {
+  constexpr int kMaxBatch = 100;
+  return StepPacer(kMaxBatch, store ? store->stop_check_period_s : std::numeric_limits<double>::infinity(), kMaxBatch);
+}
 
 }  // namespace grainlab

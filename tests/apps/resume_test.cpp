@@ -14,6 +14,7 @@
 #include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -99,7 +100,8 @@ class Resume : public ::testing::Test {
                      << "[specimen]\nindices = \"lab\"\ndeposition_friction = 0.05\ntolerance = 1.0\n"
                      << specimen_lines << "\n"
                      << "[shear]\nfinal_strain = 0.01\n[numerics]\nthreads = 1\n"
-                     << "[output]\nsnapshot_interval = 0.004\nfolder = \"" << (dir_ / name).string() << "\"\n";
+                     << "[output]\nsnapshot_interval = 0.004\nfolder = \"" << (dir_ / name).string() << "\"\n"
+                     << output_lines_;
     return p;
   }
   // Runs the test of `test_block` straight through (folder "straight") and,
@@ -132,6 +134,7 @@ class Resume : public ::testing::Test {
     return read_file(dir_ / "straight" / "series.csv");
   }
   fs::path dir_;
+  std::string output_lines_;  // more lines of [output]
 };
 
 }  // namespace
@@ -186,6 +189,47 @@ TEST_F(Resume, KilledDuringShearThenResumedGivesTheSameSeries) {
 // snapshot, byte for byte); with another friction it shears the same grains
 // otherwise; with other grains (another seed) or a missing file it is refused
 // before it writes anything.
+// kill -9 saves nothing: the run is killed three times, once its first
+// checkpoint is written (in the preparation) and twice in the shear, and
+// each time `--resume` goes on from the last checkpoint written before the
+// kill; the series at the end is the uninterrupted run's, byte for byte.
+// Checkpoints every 0.05 s, so a kill falls between two of them.
+// bench/kill9_resume.sh does the same at 20 moments of each lab test.
+TEST_F(Resume, KilledByKill9ThreeTimesThenResumedGivesTheSameSeries) {
+  ::setenv("GRAINLAB_PYTHON", "/nonexistent/python3", 1);
+  output_lines_ = "checkpoint_interval = 0.05\n";
+  const pid_t straight = start_run(config("straight"), false, dir_ / "straight.log");
+  const fs::path killed = config("killed");
+  const fs::path series = dir_ / "killed" / "series.csv";
+  const fs::path checkpoint = dir_ / "killed" / "checkpoint.bin";
+  pid_t pid = start_run(killed, false, dir_ / "killed.log");
+  const std::function<bool()> kill_when[] = {[&] { return fs::exists(checkpoint); },
+                                             [&] { return lines_in(series) >= 3; },
+                                             [&] { return lines_in(series) >= 7; }};
+  for (int k = 0; k < 3; ++k) {
+    const fs::path log = dir_ / ("killed" + std::to_string(k) + ".log");
+    while (!kill_when[k]()) {
+      int status = 0;
+      ASSERT_EQ(waitpid(pid, &status, WNOHANG), 0) << "the run ended before kill " << k << ": "
+                                                   << read_file(dir_ / "killed.log");
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+    kill(pid, SIGKILL);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL) << "kill " << k;
+    pid = start_run(killed, true, log);
+    if (k < 2) continue;
+    EXPECT_EQ(wait_exit(pid), 0) << read_file(log);
+    EXPECT_NE(read_file(log).find("resuming at step"), std::string::npos) << read_file(log);
+  }
+  ASSERT_EQ(wait_exit(straight), 0) << read_file(dir_ / "straight.log");
+  ::unsetenv("GRAINLAB_PYTHON");
+  EXPECT_EQ(read_file(series), read_file(dir_ / "straight" / "series.csv"));
+  for (const auto& f : fs::directory_iterator(dir_ / "killed"))  // the resumes removed the killed runs' temporaries
+    EXPECT_EQ(f.path().filename().string().find(".tmp."), std::string::npos) << f.path();
+}
+
 TEST_F(Resume, ARunFromAnotherRunsSpecimenShearsThatSpecimen) {
   ::setenv("GRAINLAB_PYTHON", "/nonexistent/python3", 1);
   ASSERT_EQ(wait_exit(start_run(config("first"), false, dir_ / "first.log")), 0) << read_file(dir_ / "first.log");

@@ -202,6 +202,37 @@ TEST(MeshIo, PlyHeaderClaimingMoreThanTheFileHoldsIsRefused) {
   EXPECT_EQ(read_mesh(dir / "tet.ply").faces.size(), 4u);
 }
 
+// A PLY face naming a vertex past the mesh's (assimp's reader does not
+// check) crashed the process in assimp's triangulation (found by fuzzing:
+// tests/fuzz/corpus/ply/crash_face_index_past_vertices.ply).
+TEST(MeshIo, PlyFaceNamingAVertexPastTheMeshIsRefused) {
+  test::TempDir dir;
+  const float v[12] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
+  std::string body(reinterpret_cast<const char*>(v), sizeof(v));
+  body += '\3';
+  const int f[3] = {0, 255, 1};
+  body.append(reinterpret_cast<const char*>(f), sizeof(f));
+  write_text(dir / "bad_index.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 4\nproperty float x\n"
+                                    "property float y\nproperty float z\nelement face 1\n"
+                                    "property list uchar int vertex_indices\nend_header\n" + body);
+  const std::string msg = test::input_error_of([&] { read_mesh(dir / "bad_index.ply"); });
+  EXPECT_CONTAINS(msg, "face 1 names vertex 255, but the mesh has 4 vertices");
+}
+
+// A PLY header line of no keyword, or an unknown format, made assimp's
+// reader loop for minutes (found by fuzzing): refused from the header.
+TEST(MeshIo, PlyHeaderOfAnUnknownFormatOrKeywordIsRefused) {
+  test::TempDir dir;
+  const std::string rest = "element vertex 3\nproperty float x\nproperty float y\nproperty float z\nend_header\n"
+                           "0 0 0\n1 0 0\n0 1 0\n";
+  write_text(dir / "format.ply", "ply\nformat binary_little_endia 1.0\n" + rest);
+  EXPECT_CONTAINS(test::input_error_of([&] { read_mesh(dir / "format.ply"); }),
+                  "PLY format 'binary_little_endia' is none of ascii, binary_little_endian, binary_big_endian");
+  write_text(dir / "keyword.ply", "ply\nformat ascii 1.0\nelemert vertex 3\n" + rest);
+  EXPECT_CONTAINS(test::input_error_of([&] { read_mesh(dir / "keyword.ply"); }),
+                  "PLY header line 'elemert vertex 3' starts with no PLY keyword");
+}
+
 // A device or a pipe named like a mesh is refused before anything reads it.
 TEST(MeshIo, NonRegularFileIsRefused) {
   test::TempDir dir;

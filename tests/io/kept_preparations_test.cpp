@@ -19,6 +19,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <limits>
 
 using namespace grainlab;
 
@@ -27,7 +28,8 @@ TEST(KeptPreparations, AStoppedIndexMeasurementGoesOnFromItsKeptPreparationToThe
   const IndexDensityOptions o = testing_support::small_index_box();
   const IndexDensities straight = measure_index_densities(spec, o);
   ASSERT_TRUE(straight.settled());
-  // Stopped below at the 43rd check (one every 100 steps): step 4300, in the
+  // Stopped below at the 43rd check (one every 100 steps: an infinite
+  // stop_check_period_s keeps every batch at 100 steps): step 4300, in the
   // compaction (measured: deposition to step 4200, compaction to 11700),
   // where the protocol's phase, phase start and servo must come back too.
   ASSERT_GT(straight.dense.front().steps, 6000);
@@ -35,6 +37,7 @@ TEST(KeptPreparations, AStoppedIndexMeasurementGoesOnFromItsKeptPreparationToThe
   test::IoTempDir dir;
   int asked = 0;
   KeptPreparations stopping(dir.path, [&] { return ++asked == 43; });
+  stopping.stop_check_period_s = std::numeric_limits<double>::infinity();
   const std::string name = index_preparation_name(true, spec.seed);
   EXPECT_EQ(stopping.file(name).filename(), "index_e_min_seed3.bin");
   EXPECT_THROW(measure_index_densities(spec, o, {}, {}, {}, &stopping), Stopped);
@@ -68,6 +71,26 @@ TEST(KeptPreparations, AStoppedIndexMeasurementGoesOnFromItsKeptPreparationToThe
   EXPECT_FALSE(std::filesystem::exists(going_on.file(name)));
 }
 
+// Where 100 steps take longer than stop_check_period_s (faceted grains take
+// seconds), the batches shrink so that a stop signal is seen within that
+// period. With a period of 0 every batch after the first (100 steps) is one
+// step: the third look at the stop comes at step 102.
+TEST(KeptPreparations, AShortStopCheckPeriodLooksAtTheStopAfterEveryStep) {
+  const LabSpec spec = testing_support::sphere_spec();
+  const double mu = 0.05;
+  test::IoTempDir dir;
+  int asked = 0;
+  KeptPreparations stopping(dir.path, [&] { return ++asked == 3; });
+  stopping.stop_check_period_s = 0;
+  PreparationTrial stopped;
+  EXPECT_THROW(trial_preparation(spec, mu, stopped, &stopping), Stopped);
+  LabSpec s = spec;
+  s.specimen.deposition_friction = mu;
+  SpecimenPreparation kept(s);
+  ASSERT_GE(KeptPreparations(dir.path).restore(kept, trial_preparation_name(mu), s), 0);
+  EXPECT_EQ(kept.world().state.step, 102);
+}
+
 TEST(KeptPreparations, AStoppedTrialGoesOnToTheSameSpecimenAndAFinishedOneIsTakenBack) {
   const LabSpec spec = testing_support::sphere_spec();
   const double mu = 0.05;
@@ -77,6 +100,7 @@ TEST(KeptPreparations, AStoppedTrialGoesOnToTheSameSpecimenAndAFinishedOneIsTake
   test::IoTempDir dir;
   int asked = 0;
   KeptPreparations stopping(dir.path, [&] { return ++asked == 20; });
+  stopping.stop_check_period_s = std::numeric_limits<double>::infinity();
   PreparationTrial stopped;
   EXPECT_THROW(trial_preparation(spec, mu, stopped, &stopping), Stopped);
   const std::filesystem::path file = stopping.file(trial_preparation_name(mu));

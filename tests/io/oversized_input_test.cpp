@@ -3,10 +3,13 @@
 // is refused before it is read, and a hostile value (a 10 MB string, a long
 // key) is quoted only by its start, so that messages stay short.
 #include "core/error.h"
+#include "grains/scanned_grains.h"
+#include "grains/sh_grain.h"
 #include "io/checkpoint.h"
 #include "io/config.h"
 #include "io/json.h"
 #include "io/pvd_reader.h"
+#include "io/sh_spectrum_file.h"
 #include "io/table.h"
 #include "io_test_helpers.h"
 
@@ -22,10 +25,20 @@ TEST(OversizedInput, EveryReaderRefusesADeviceBeforeReadingIt) {
   const std::filesystem::path zero = "/dev/zero";
   for (const auto& read : std::vector<std::function<void()>>{
            [&] { load_config(zero); }, [&] { load_checkpoint(zero); }, [&] { read_pvd(zero); },
-           [&] { read_json_file(zero); }, [&] { read_csv(zero); }}) {
+           [&] { read_json_file(zero); }, [&] { read_csv(zero); }, [&] { read_sh_file(zero); },
+           [&] { read_sh_spectrum(zero); }}) {
     const std::string msg = test::error_of<InputError>(read);
     EXPECT_NE(msg.find("'/dev/zero' is a character device, not a regular file"), std::string::npos) << msg;
   }
+}
+
+// grains.scan's grains.csv was read line by line without a bound.
+TEST(OversizedInput, AScanFoldersGrainTableThatIsADeviceIsRefused) {
+  test::IoTempDir dir;
+  std::filesystem::create_symlink("/dev/zero", dir.path / "grains.csv");
+  const std::string msg = test::error_of<InputError>([&] { read_scanned_grains(dir.path, false); });
+  EXPECT_NE(msg.find("grain table"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("is a character device, not a regular file"), std::string::npos) << msg;
 }
 
 TEST(OversizedInput, AConfigOverItsLimitIsRefusedWithTheFigure) {

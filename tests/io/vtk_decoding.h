@@ -89,12 +89,28 @@ inline std::vector<std::uint8_t> read_zlib_blocks(std::string_view data, std::si
                                             blocks, block_size, last));
   std::size_t at = 24 + 8 * blocks;
   if (data.size() < at) throw std::invalid_argument("the zlib block sizes are cut short");
-  const std::uint64_t total = blocks == 0 ? 0 : (blocks - 1) * block_size + (last ? last : block_size);
+  // Each block's size against its compressed bytes before anything is
+  // allocated: deflate packs at most 1032 bytes into one, so a header that
+  // claims more than its blocks can hold is damaged (it once allocated what a
+  // 2 kB file claimed: 7.6 EB).
+  const auto block_bytes = [&](std::uint64_t b) { return b + 1 < blocks || last == 0 ? block_size : last; };
+  std::uint64_t total = 0, packed = 0;
+  for (std::uint64_t b = 0; b < blocks; ++b) {
+    const std::uint64_t csize = decoding::read_u64(data, 24 + 8 * b);
+    if (csize > data.size() - at - packed)
+      throw std::invalid_argument(fmt::format("zlib block {} of {} is cut short", b + 1, blocks));
+    if (block_bytes(b) / 1032 > csize)
+      throw std::invalid_argument(fmt::format("zlib block {} of {} claims {} bytes, more than its {} compressed bytes "
+                                              "can hold",
+                                              b + 1, blocks, block_bytes(b), csize));
+    packed += csize;
+    total += block_bytes(b);
+  }
   std::vector<std::uint8_t> out(total);
   std::size_t written = 0;
   for (std::uint64_t b = 0; b < blocks; ++b) {
     const std::uint64_t csize = decoding::read_u64(data, 24 + 8 * b);
-    const std::uint64_t expect = b + 1 < blocks ? block_size : total - written;
+    const std::uint64_t expect = block_bytes(b);
     if (csize > data.size() - at)
       throw std::invalid_argument(fmt::format("zlib block {} of {} is cut short", b + 1, blocks));
     uLongf len = static_cast<uLongf>(expect);

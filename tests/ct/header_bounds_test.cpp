@@ -1,0 +1,99 @@
+// An NRRD or MetaImage header is read with its lines bounded, and an encoded
+// NRRD (gzip, ascii, hex) whose data is too short to hold the image its header
+// claims is refused from the header, before ITK allocates that image: a small
+// file cannot make grainlab take gigabytes.
+#include "ct_fixture.h"
+
+#include "core/error.h"
+#include "ct/image_io.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <string>
+
+namespace grainlab::ct {
+namespace {
+
+namespace fs = std::filesystem;
+
+class CtHeaderBounds : public ::testing::Test {
+ protected:
+  void SetUp() override { dir_ = testing::fresh_folder(::testing::UnitTest::GetInstance()->current_test_info()->name()); }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  fs::path write(const std::string& name, const std::string& bytes) {
+    const fs::path p = dir_ / name;
+    std::ofstream(p, std::ios::binary) << bytes;
+    return p;
+  }
+  // The message of the InputError that reading the header of `path` throws ("" if none).
+  static std::string refusal(const fs::path& path) {
+    ImageSource source;
+    source.path = path;
+    try {
+      read_image_header(source);
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "";
+  }
+
+  fs::path dir_;
+};
+
+std::string nrrd_header(const std::string& sizes, const std::string& type, const std::string& encoding) {
+  return "NRRD0004\ntype: " + type + "\ndimension: 3\nsizes: " + sizes + "\nspacings: 0.02 0.02 0.02\nencoding: " +
+         encoding + "\n\n";
+}
+
+// 64 values "0 1 2 ... 63": 4^3 voxels in ASCII.
+std::string ascii_values() {
+  std::string s;
+  for (int i = 0; i < 64; ++i) s += std::to_string(i) + " ";
+  return s;
+}
+
+TEST_F(CtHeaderBounds, AGzipNrrdClaimingMoreThanItsDataCanHoldIsRefused) {
+  // 1000^3 voxels of 2 bytes (2 GB) need at least 2e9 / 1032 bytes of gzip data; the file has 100.
+  const fs::path p = write("claims.nrrd", nrrd_header("1000 1000 1000", "unsigned short", "gzip") + std::string(100, 'x'));
+  const std::string msg = refusal(p);
+  EXPECT_NE(msg.find("cannot hold the image its header describes"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("(2000000000 bytes) need at least 1937984 bytes"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("gzip packs at most 1032 bytes into one"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("holds 100 after its header"), std::string::npos) << msg;
+}
+
+TEST_F(CtHeaderBounds, AnAsciiNrrdIsReadWhenItsValuesFitAndRefusedWhenTheHeaderClaimsMore) {
+  EXPECT_EQ(refusal(write("fits.nrrd", nrrd_header("4 4 4", "float", "ascii") + ascii_values())), "");
+  // 5^3 = 125 values need at least 249 characters; the 64 values take 182.
+  const std::string msg = refusal(write("claims.nrrd", nrrd_header("5 5 5", "float", "ascii") + ascii_values()));
+  EXPECT_NE(msg.find("need at least 249 bytes of encoded data (each value takes a digit and a separator)"),
+            std::string::npos)
+      << msg;
+}
+
+TEST_F(CtHeaderBounds, AHeaderLineOverItsBoundIsRefusedBeforeItIsReadWhole) {
+  const std::string long_line(70000, 'a');  // no newline: a raw scan named .nrrd would look like this
+  for (const char* name : {"noise.nrrd", "noise.mha"}) {
+    const std::string text = std::string(name) == "noise.nrrd" ? "NRRD0004\n" + long_line : long_line;
+    const std::string msg = refusal(write(name, text));
+    EXPECT_NE(msg.find("a line of more than 65536 characters"), std::string::npos) << name << ": " << msg;
+  }
+  const std::string msg = refusal(write("magic.nrrd", long_line));
+  EXPECT_NE(msg.find("a line of more than 65536 characters where an NRRD header has short text lines"),
+            std::string::npos)
+      << msg;
+}
+
+// A header line that is no field, comment or key/value pair made ITK's NRRD
+// reader overflow a buffer and abort the process (found by fuzzing).
+TEST_F(CtHeaderBounds, AnNrrdHeaderLineOfNoFieldIsRefused) {
+  const std::string msg = refusal(write("line.nrrd", "NRRD0004\ntype unsigned char\ndimension: 3\n\n"));
+  EXPECT_NE(msg.find("NRRD header line 2 ('type unsigned char') is neither a field ('name: value')"),
+            std::string::npos)
+      << msg;
+}
+
+}  // namespace
+}  // namespace grainlab::ct
