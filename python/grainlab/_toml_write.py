@@ -6,7 +6,9 @@ dict's order, so the same dict always gives the same text (a sweep hashes it).
 """
 
 import math
+import os
 import re
+from collections.abc import Mapping
 
 _BARE_KEY = re.compile(r"^[A-Za-z0-9_-]+$")
 
@@ -32,8 +34,9 @@ def _string(s):
     return "".join(out)
 
 
-def value_text(v):
-    """One value as TOML (raises TypeError for what a config cannot hold)."""
+def value_text(v, where="value"):
+    """One value as TOML; `where` (its dotted key) names it in the TypeError raised
+    for what a config cannot hold."""
     if isinstance(v, bool):
         return "true" if v else "false"
     if isinstance(v, int):
@@ -43,30 +46,32 @@ def value_text(v):
             return "nan"
         if math.isinf(v):
             return "inf" if v > 0 else "-inf"
-        return repr(v)
+        return repr(float(v))  # a numpy float64 too
     if isinstance(v, str):
         return _string(v)
+    if isinstance(v, os.PathLike):
+        return _string(os.fspath(v))
     if isinstance(v, (list, tuple)):
-        return "[" + ", ".join(value_text(x) for x in v) + "]"
+        return "[" + ", ".join(value_text(x, where) for x in v) + "]"
     if hasattr(v, "item") and callable(v.item):  # a numpy scalar
-        return value_text(v.item())
-    raise TypeError("a TOML config value must be a string, boolean, number or list, not %s (%r)"
-                    % (type(v).__name__, v))
+        return value_text(v.item(), where)
+    raise TypeError("%s = %r: a config value is a string, boolean, number or a list of them, not %s"
+                    % (where, v, type(v).__name__))
 
 
 def dumps(data):
-    """The TOML text of `data` (a dict of values and nested dicts)."""
+    """The TOML text of `data` (a dict of top-level values and tables as nested dicts)."""
     lines = []
 
     def table(d, path):
-        scalars = [(k, v) for k, v in d.items() if not isinstance(v, dict)]
-        tables = [(k, v) for k, v in d.items() if isinstance(v, dict)]
+        scalars = [(str(k), v) for k, v in d.items() if not isinstance(v, Mapping)]
+        tables = [(str(k), v) for k, v in d.items() if isinstance(v, Mapping)]
         if path and (scalars or not tables):
             if lines:
                 lines.append("")
             lines.append("[" + ".".join(_key(p) for p in path) + "]")
         for k, v in scalars:
-            lines.append("%s = %s" % (_key(k), value_text(v)))
+            lines.append("%s = %s" % (_key(k), value_text(v, ".".join(path + [k]))))
         for k, v in tables:
             table(v, path + [k])
 

@@ -9,12 +9,11 @@ command line's message. SI units throughout (m, kg, s, N, Pa).
 
 from __future__ import annotations
 
-import math
 import os
 import tomllib
 from typing import Any, Mapping, Union
 
-from . import _grainlab
+from . import _grainlab, _toml_write
 
 PathLike = Union[str, "os.PathLike[str]"]
 
@@ -128,49 +127,4 @@ def _split_key(dotted_key: str) -> list[str]:
 def dict_to_toml(values: Mapping[str, Any]) -> str:
     """TOML text of a dict of top-level values and tables (nested dicts): what
     :meth:`Config.from_dict` parses. Values: str, bool, int, float, lists of them."""
-    lines: list[str] = []
-    _write_table(values, [], lines)
-    return "\n".join(lines) + "\n"
-
-
-def _write_table(values: Mapping[str, Any], path: list[str], lines: list[str]) -> None:
-    tables = []
-    for key, value in values.items():
-        if isinstance(value, Mapping):
-            tables.append((key, value))
-        else:
-            lines.append(f"{_toml_key(key)} = {_toml_value(value, '.'.join(path + [str(key)]))}")
-    for key, table in tables:
-        if lines:
-            lines.append("")
-        lines.append("[" + ".".join(_toml_key(k) for k in path + [key]) + "]")
-        _write_table(table, path + [key], lines)
-
-
-def _toml_key(key: Any) -> str:
-    key = str(key)
-    if key and all(c.isalnum() or c in "_-" for c in key):
-        return key
-    return '"' + key.replace("\\", "\\\\").replace('"', '\\"') + '"'
-
-
-def _toml_value(value: Any, where: str) -> str:
-    if isinstance(value, bool):
-        return "true" if value else "false"
-    if isinstance(value, int):
-        return str(value)
-    if isinstance(value, float):
-        if math.isnan(value):
-            return "nan"
-        if math.isinf(value):
-            return "inf" if value > 0 else "-inf"
-        return repr(float(value))  # a numpy float64 too
-    if isinstance(value, str):
-        return '"' + value.replace("\\", "\\\\").replace('"', '\\"').replace("\n", "\\n") + '"'
-    if isinstance(value, os.PathLike):
-        return _toml_value(os.fspath(value), where)
-    if isinstance(value, (list, tuple)):
-        return "[" + ", ".join(_toml_value(v, where) for v in value) + "]"
-    if hasattr(value, "item"):  # a numpy scalar
-        return _toml_value(value.item(), where)
-    raise TypeError(f"{where} = {value!r}: a config value is a str, bool, int, float or a list of them")
+    return _toml_write.dumps(values)
