@@ -30,6 +30,7 @@ from .config import Config, default_config, lab_tests  # noqa: E402
 from .errors import ConfigError, InputError, RunError  # noqa: E402
 from .run_folder import Run, report  # noqa: E402
 from .running import run  # noqa: E402
+from .sweep import sweep  # noqa: E402  (dask.distributed is imported only when a sweep runs)
 
 __version__ = "0.1.0"
 

@@ -1,4 +1,4 @@
-"""`python -m grainlab.sweep SWEEP.toml` (what `grainlab sweep` runs): a sweep file's cases on Dask.
+"""`python -m grainlab._sweep_main SWEEP.toml` (what `grainlab sweep` runs): a sweep file's cases on Dask.
 
 Exit status: 0 every case finished; 2 bad input (the sweep file, a missing grainlab
 binary); 3 a case failed (the others ran; the table has its error), Dask is missing, or
@@ -98,3 +98,7 @@ def main(argv=None):
               % len(result.stopped), file=sys.stderr)
         return 130
     return 3 if result.failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

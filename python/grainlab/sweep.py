@@ -16,7 +16,7 @@ a case whose worker dies is resubmitted by Dask and continues from its checkpoin
 failing case is reported and the others go on. At the end: OUT/cases.csv (and
 cases.parquet with pyarrow) and the comparison report OUT/report/index.html.
 
-`python -m grainlab.sweep SWEEP.toml` (what `grainlab sweep` runs) reads a sweep file;
+`python -m grainlab._sweep_main SWEEP.toml` (what `grainlab sweep` runs) reads a sweep file;
 see docs/sweeps.md.
 """
 
@@ -24,7 +24,6 @@ import dataclasses
 import os
 import shutil
 import subprocess
-import sys
 import time
 import uuid
 
@@ -229,7 +228,3 @@ def sweep(base, grid=None, seeds=None, client=None, out="runs/sweep", workers=No
     return SweepResult(folder=out, cases=cases, results=results, table=_sweep_table.as_frame(rows),
                        table_path=table_path, report=report_path, ran=ran)
 
-
-if __name__ == "__main__":
-    from ._sweep_main import main
-    sys.exit(main())

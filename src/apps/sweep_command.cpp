@@ -1,7 +1,7 @@
 // `grainlab sweep SWEEP.toml [--scheduler ADDRESS] [--workers N] [--out DIR] [--dry-run]`:
 // a parameter sweep on Dask. The sweep itself is Python (python/grainlab/sweep.py,
 // on python3-distributed): this command replaces itself with
-// `PYTHON -m grainlab.sweep SWEEP.toml --grainlab THIS_BINARY ...`, the package's
+// `PYTHON -m grainlab._sweep_main SWEEP.toml --grainlab THIS_BINARY ...`, the package's
 // folder put first on PYTHONPATH, so that every case runs this same binary. PYTHON is
 // $GRAINLAB_PYTHON or /usr/bin/python3; the package is found next to the binary
 // (build/python) or in the source tree it was built from. The Python side reads and
@@ -66,7 +66,7 @@ int run_sweep(const SweepOptions& o) {
   const fs::path package = package_folder(binary);
   const char* forced = std::getenv("GRAINLAB_PYTHON");
   const std::string python = forced && *forced ? forced : "/usr/bin/python3";
-  std::vector<std::string> args = {python, "-m", "grainlab.sweep", o.file, "--grainlab", binary.string()};
+  std::vector<std::string> args = {python, "-m", "grainlab._sweep_main", o.file, "--grainlab", binary.string()};
   if (!o.scheduler.empty()) args.insert(args.end(), {"--scheduler", o.scheduler});
   if (o.workers > 0) args.insert(args.end(), {"--workers", std::to_string(o.workers)});
   if (!o.out.empty()) args.insert(args.end(), {"--out", o.out});
