@@ -38,20 +38,6 @@ std::uint64_t state_hash(const World& w) {
   return h;
 }
 
-// The grain pairs' contact-feature caches (collision/patch_cache.h): fills,
-// cached calls, and the heap bytes of each pair that holds one.
-void print_patch_caches(const World& w, const char* when) {
-  double fills = 0, uses = 0, bytes = 0, held = 0;
-  for (const CandidatePair& p : w.state.pairs)
-    if (const PatchCache* c = p.cache.patch.peek()) {
-      fills += c->fill_count, uses += c->use_count;
-      if (c->phase == PatchCache::Phase::kFilled) bytes += static_cast<double>(c->memory_bytes()), ++held;
-    }
-  fmt::print("     contact-feature caches {}: {:.0f} fills, {:.0f} cached calls; {:.0f} pairs hold one, "
-             "{:.0f} bytes each\n",
-             when, fills, uses, held, held > 0 ? bytes / held : 0.0);
-}
-
 void run_scene(const char* label, SettlingBedSpec spec, int settle, int steps, int only_threads) {
   SettlingBed bed = make_settling_bed(spec);
   World& w = bed.world;
@@ -63,7 +49,6 @@ void run_scene(const char* label, SettlingBedSpec spec, int settle, int steps, i
              "KE {:.2e} J\n",
              label, w.model.bodies.size(), settle, settle_clock.seconds(),
              2.0 * w.contact_count() / w.model.bodies.size(), w.kinetic_energy());
-  print_patch_caches(w, "while settling");
   const World settled = w;
   for (int threads : {1, 2}) {
     if (only_threads > 0 && threads != only_threads) continue;
@@ -78,7 +63,6 @@ void run_scene(const char* label, SettlingBedSpec spec, int settle, int steps, i
                "{:.0f} narrowphase pair tests and {:.0f} contacts per step; state hash {:016x})\n",
                threads, threads > 1 ? "s" : " ", gs, 1e3 * el / steps, run.profile.broadphase_rebuilds,
                double(run.profile.pair_tests) / steps, double(run.profile.contacts) / steps, state_hash(run));
-    print_patch_caches(run, "in the timed steps");
     fmt::print("     phase ms/step:");
     for (int p = 0; p < static_cast<int>(Phase::Count); ++p)
       fmt::print(" {} {:.3f}", kPhaseNames[p], 1e3 * run.profile.seconds[p] / steps);

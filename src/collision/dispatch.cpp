@@ -111,7 +111,7 @@ std::string shape_kind_name(ShapeKind k) {
 namespace {
 
 // The cache of the pair taken the other way round (b to a).
-PairCache flipped(const PairCache& c) { return {-c.dir, c.hint_b, c.hint_a, c.warm, c.simplex.swapped(), {}}; }
+PairCache flipped(const PairCache& c) { return {-c.dir, c.hint_b, c.hint_a, c.warm, c.simplex.swapped()}; }
 
 }  // namespace
 

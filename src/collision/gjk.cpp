@@ -258,10 +258,10 @@ bool Epa::expand(int closest, int wi) {
 // Polytope pairs take the translated-GJK path (penetration.h) when `dir` is
 // warm (last step's normal of this pair) and it concludes; GJK/EPA otherwise.
 ContactResult collide_convex(const PolytopeShape& a, const PolytopeShape& b, Vec3& dir, bool warm,
-                             SimplexCache* simplex, PatchCache* patch) {
+                             SimplexCache* simplex) {
   ContactResult r;
   if (!(warm && warm_penetration(a, b, dir, r, simplex))) r = gjk_epa(a, b, dir, nullptr, simplex);
-  contact_patch(a, b, r, patch);
+  contact_patch(a, b, r);
   return r;
 }
 // A box wall against a grain: GJK/EPA (or the warm path) for depth and

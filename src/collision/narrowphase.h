@@ -3,7 +3,6 @@
 #pragma once
 
 #include "collision/contact_result.h"
-#include "collision/patch_cache.h"
 #include "collision/shapes.h"
 #include "collision/simplex_cache.h"
 
@@ -40,20 +39,16 @@ ContactResult collide(const BoxShape& a, const SphereShape& b);
 // shallow penetration is found by the local translated-GJK iteration
 // (penetration.h), several times cheaper than EPA; cold calls use EPA.
 // A touching polytope pair's contact is then contact_patch's below.
-// `simplex` (optional): the pair's kept GJK simplex (simplex_cache.h);
-// `patch` (optional): its kept contact features (patch_cache.h).
+// `simplex` (optional): the pair's kept GJK simplex (simplex_cache.h).
 ContactResult collide_convex(const PolytopeShape& a, const PolytopeShape& b, Vec3& dir, bool warm = false,
-                             SimplexCache* simplex = nullptr, PatchCache* patch = nullptr);
+                             SimplexCache* simplex = nullptr);
 ContactResult collide_convex(const SphereShape& a, const PolytopeShape& b, Vec3& dir);
 
 // For touching polytopes A, B with r's normal and penetration depth: replaces
 // r by the soft depth of the vertices of each body lying inside the other
 // (soft_depth.h: depth, normal, point, gain, twist, spread) when that depth
 // exceeds r's; keeps the witness point otherwise (e.g. edge across edge).
-// With `cache`, the pair's contact features from earlier calls are reused
-// while they provably give the same bits (patch_cache.h), and refilled
-// when the motion or the skin's adaptation says so.
-void contact_patch(const PolytopeShape& a, const PolytopeShape& b, ContactResult& r, PatchCache* cache = nullptr);
+void contact_patch(const PolytopeShape& a, const PolytopeShape& b, ContactResult& r);
 ContactResult collide_convex(const BoxShape& a, const PolytopeShape& b, Vec3& dir, bool warm = false);
 ContactResult collide_convex(const BoxShape& a, const SphereShape& b, Vec3& dir);
 

@@ -16,7 +16,6 @@
 // and gives the normal the force is checked against; the potential is u(D)
 // alone.
 #include "collision/narrowphase.h"
-#include "collision/patch_cache.h"
 #include "collision/soft_depth.h"
 
 #include <algorithm>
@@ -100,14 +99,6 @@ struct EdgeScratch {
   std::vector<double> l0, slope;
   std::vector<std::uint32_t> line_plane;
   Walk rows, classes, member;
-  // The cache (patch_cache.h): a kept edge's lines (depths at both ends,
-  // padded to whole lanes; their positions in o_planes), each plane's
-  // position in o_planes, each vertex's first kept edge, and a fill's
-  // envelope corners.
-  std::vector<double> kdp, kdq;
-  std::vector<std::uint32_t> kpos, kplane, pos_of, first_edge;
-  std::vector<double> corner_t, corner_e;
-  Walk groups, sets;
 };
 
 // d[k] = c[k] - m[k] . p for the n planes (n whole lanes): the products of
@@ -127,132 +118,6 @@ __attribute__((optimize("fp-contract=off"))) double plane_distance(const EdgeScr
   return x.c[k] - std::fma(x.mz[k], p.z(), x.mx[k] * p.x() + x.my[k] * p.y());
 }
 
-// One plane's distance from its own data, rounded as above.
-__attribute__((optimize("fp-contract=off"))) double plane_distance(const ConvexPolytope::Plane& pl, const Vec3& p) {
-  return pl.c - std::fma(pl.m.z(), p.z(), pl.m.x() * p.x() + pl.m.y() * p.y());
-}
-
-// s's local frame seen from o's: x_o = to_o v + off (o's local units).
-struct Frame {
-  Mat3 to_o;
-  Vec3 off;
-  Frame(const PolytopeShape& s, const PolytopeShape& o)
-      : to_o(o.rot.transpose() * s.rot * (s.scale / o.scale)), off(o.rot.transpose() * (s.pos - o.pos) / o.scale) {}
-  Vec3 local(const ConvexPolytope& poly, Index v) const { return to_o * poly.vertex(v) + off; }
-};
-
-// Walks the lower envelope of the n lines l0[j] + sl[j] t over t in [0, 1]:
-// from t = 0, the lowest line there (ties: the one falling fastest), up to
-// the first line crossing below it, which continues it (ties: again the one
-// falling fastest), and so on; piece(j, t0, t1) for each stretch. With
-// `stop_outside`, it stops where the envelope is at or below 0 and falling
-// (it is concave: outside from there on).
-template <class Piece>
-void walk_envelope(const double* l0, const double* sl, std::size_t n, bool stop_outside, Piece piece) {
-  std::size_t cur = 0;
-  for (std::size_t j = 1; j < n; ++j)
-    if (l0[j] < l0[cur] || (l0[j] == l0[cur] && sl[j] < sl[cur])) cur = j;
-  double t0 = 0;
-  while (t0 < 1) {
-    const double slope = sl[cur], lc = l0[cur];
-    if (stop_outside && lc + slope * t0 <= 0 && slope <= 0) break;
-    double t1 = 1;
-    std::size_t next = cur;
-    for (std::size_t j = 0; j < n; ++j) {
-      const double sk = sl[j];
-      if (!(sk < slope)) continue;
-      // Line j meets the current one at tc = (l0[j] - lc) / (slope - sk)
-      // (slope - sk > 0): divide only when it can be the next crossing.
-      const double num = l0[j] - lc, den = slope - sk;
-      if (!(num < (t1 + 1e-12) * den)) continue;
-      const double tc = num / den;
-      if (!(tc > t0)) continue;
-      // The earliest crossing; of crossings equally early within rounding
-      // the line falling fastest. Slopes fall at every switch: at most n.
-      const bool earlier = tc < t1 - 1e-12;
-      const bool tied = !earlier && tc <= t1 + 1e-12 && next != cur && sk < sl[next];
-      if (earlier || tied) t1 = std::min(t1, tc), next = j;
-    }
-    piece(cur, t0, t1);
-    if (next == cur) break;
-    cur = next;
-    t0 = t1;
-  }
-}
-
-// The pieces of the edge from s's vertex v to w inside o, from its lines'
-// depths at v (dp) and at w (dq) (o's local units; npp of them, whole lanes,
-// padded with +inf), into the soft depth; pos[k]: line k's plane as a
-// position in o_planes (null: k itself). Which lines can be on the envelope
-// E(t) = min_k l_k(t), 4 planes at a time. Every line lies below
-// max(dp[k], dq[k]) on the edge, so E lies below U = min_k max(dp[k], dq[k]):
-// if U <= 0 the edge is outside o (one plane has both ends outside), and a
-// line on E dips below U somewhere (min(dp[k], dq[k]) <= U). And E lies below
-// the line a lowest at t = 0 and the line b lowest at t = 1, so a line on E
-// at t has l_k(t) <= l_a(t) and l_k(t) <= l_b(t): with f = l_k - l_a (f0 >= 0)
-// and g = l_k - l_b (g1 >= 0), f <= 0 on [f0 / (f0 - f1), 1] when f1 <= 0,
-// g <= 0 on [0, g0 / (g0 - g1)] when g0 <= 0, and the two meet iff
-// f0 (g1 - g0) + g0 (f0 - f1) <= 0. Among nearly coplanar faces (a flat face
-// of an angular grain) that keeps a few of some 30 lines below U. A slack of
-// 1e-9 of the depths keeps the lines that the walk could take by its own
-// tolerance. The lines kept enter the walk in the order given.
-void edge_pieces(const PolytopeShape& s, Index v, Index w, const PolytopeShape& o, const std::vector<Index>& o_planes,
-                 double sign, const double* dp, const double* dq, std::size_t npp, const std::uint32_t* pos,
-                 EdgeScratch& x, SoftDepth& soft) {
-  const Lanes* const lp = reinterpret_cast<const Lanes*>(dp);
-  const Lanes* const lq = reinterpret_cast<const Lanes*>(dq);
-  const std::size_t blocks = npp / EdgeScratch::kLanes;
-  Lanes u = lp[0] > lq[0] ? lp[0] : lq[0], e0 = lp[0], e1 = lq[0];
-  for (std::size_t i = 1; i < blocks; ++i) {
-    const Lanes hi = lp[i] > lq[i] ? lp[i] : lq[i];
-    u = hi < u ? hi : u;
-    e0 = lp[i] < e0 ? lp[i] : e0;
-    e1 = lq[i] < e1 ? lq[i] : e1;
-  }
-  const double upper = std::min(std::min(u[0], u[1]), std::min(u[2], u[3]));
-  if (upper <= 0) return;
-  const double min0 = std::min(std::min(e0[0], e0[1]), std::min(e0[2], e0[3]));
-  const double min1 = std::min(std::min(e1[0], e1[1]), std::min(e1[2], e1[3]));
-  std::size_t a = 0, b = 0;
-  while (dp[a] != min0) ++a;
-  while (dq[b] != min1) ++b;
-  const double slack = 1e-9 * std::max({std::abs(upper), std::abs(min0), std::abs(min1)});
-  const Lanes pa = lanes(dp[a]), qa = lanes(dq[a]), pb = lanes(dp[b]), qb = lanes(dq[b]);
-  const Lanes up = lanes(upper), tol = lanes(slack), tol2 = lanes(slack * slack);
-  // The lines kept, compacted: value at t = 0 and slope along the edge, and their plane.
-  double* const l0 = x.l0.data();
-  double* const sl = x.slope.data();
-  std::uint32_t* const pl = x.line_plane.data();
-  std::size_t n = 0;
-  for (std::size_t i = 0; i < blocks; ++i) {
-    const Lanes p0 = lp[i], q0 = lq[i];
-    const Lanes f0 = p0 - pa, f1 = q0 - qa, g0 = p0 - pb, g1 = q0 - qb;
-    const Mask keep = ((p0 < q0 ? p0 : q0) <= up) & (f1 <= tol) & (g0 <= tol) &
-                      (f0 * (g1 - g0) + g0 * (f0 - f1) <= tol2 + tol * (f0 - f1 + g1 - g0));
-    if (!(keep[0] | keep[1] | keep[2] | keep[3])) continue;
-    for (std::size_t j = 0; j < EdgeScratch::kLanes; ++j) {
-      const std::size_t k = i * EdgeScratch::kLanes + j;
-      l0[n] = dp[k], sl[n] = dq[k] - dp[k], pl[n] = pos ? pos[k] : static_cast<std::uint32_t>(k);
-      n += keep[j] != 0;
-    }
-  }
-  const ConvexPolytope& poly = *s.poly;
-  const Vec3 p = s.pos + s.scale * (s.rot * poly.vertex(v));
-  const Vec3 e = s.scale * (s.rot * (poly.vertex(w) - poly.vertex(v)));
-  walk_envelope(l0, sl, n, true, [&](std::size_t cur, double t0, double t1) {
-    const double slope = sl[cur], lc = l0[cur];
-    soft.add_linear_piece(p + t0 * e, p + t1 * e, (lc + slope * t0) * o.scale, (lc + slope * t1) * o.scale,
-                          sign * (o.rot * o.poly->planes()[o_planes[pl[cur]]].m));
-  });
-}
-
-// What a filling call records of one side of the pair (patch_cache.h):
-// every edge not outside o by the skin, with its lines within the skin.
-struct Recorder {
-  PatchCache::Side& side;
-  const std::vector<Index>& o_planes;
-};
-
 // Adds the parts of the edges of `s` at the vertices `verts` that lie inside
 // `o` to the soft depth: along an edge x(t) = p + t (q - p), t in [0, 1], the
 // depth inside o is the lower envelope of the plane distances
@@ -266,11 +131,9 @@ struct Recorder {
 // first classed by one plane (the one its last classed neighbour was
 // outside of) and gets its whole row only when that plane does not put it
 // outside; an edge whose ends are outside one plane is skipped. What is
-// skipped is what the envelope test (U <= 0, edge_pieces) would skip.
-// With `rec`, it also records each edge and its lines for the cache.
+// skipped is what the envelope test (U <= 0 below) would skip.
 void add_edges(const PolytopeShape& s, const std::vector<Index>& verts, const PolytopeShape& o,
-               const std::vector<Index>& o_planes, double sign, EdgeScratch& x, SoftDepth& soft,
-               Recorder* rec = nullptr) {
+               const std::vector<Index>& o_planes, double sign, EdgeScratch& x, SoftDepth& soft) {
   const ConvexPolytope& poly = *s.poly;
   const std::size_t np = o_planes.size();
   if (np == 0) return;
@@ -287,8 +150,9 @@ void add_edges(const PolytopeShape& s, const std::vector<Index>& verts, const Po
   x.rows.begin(poly.size());
   x.classes.begin(poly.size());
   x.dist.clear();
-  const Frame frame(s, o);
-  const auto local = [&](Index v) -> Vec3 { return frame.local(poly, v); };
+  const Mat3 to_o = o.rot.transpose() * s.rot * (s.scale / o.scale);  // local s -> local o
+  const Vec3 off = o.rot.transpose() * (s.pos - o.pos) / o.scale;
+  const auto local = [&](Index v) -> Vec3 { return to_o * poly.vertex(v) + off; };
   const auto distance = [&](std::size_t k, const Vec3& pl) { return plane_distance(x, k, pl); };
   const auto row = [&](Index v, const Vec3& pl) -> std::size_t {  // v's row (dist may grow: an offset)
     if (!x.rows.mark(v)) return x.row_of[v];
@@ -297,37 +161,6 @@ void add_edges(const PolytopeShape& s, const std::vector<Index>& verts, const Po
     plane_distances(x, npp, pl, x.dist.data() + r);
     x.row_of[v] = static_cast<std::uint32_t>(r);
     return r;
-  };
-  // Records the edge v-w unless it lies `outside` o (a lower bound) by the
-  // skin or more, with the lines the cache keeps (patch_cache.h): those
-  // within the skin of the whole envelope, or of U at their higher end.
-  const auto record = [&](Index v, const Vec3& vl, Index w, const Vec3& wl, double outside) {
-    const double skin = rec->side.skin;
-    if (outside >= skin) return;
-    const std::size_t rv = row(v, vl), rw = row(w, wl);
-    const double* dp = x.dist.data() + rv;
-    const double* dq = x.dist.data() + rw;
-    double upper = std::numeric_limits<double>::infinity(), e1 = upper;
-    for (std::size_t k = 0; k < np; ++k) upper = std::min(upper, std::max(dp[k], dq[k])), e1 = std::min(e1, dq[k]);
-    if (-upper >= skin) return;
-    x.kdp.resize(np), x.kdq.resize(np);
-    double* const l0 = x.kdp.data();
-    double* const sl = x.kdq.data();
-    for (std::size_t k = 0; k < np; ++k) l0[k] = dp[k], sl[k] = dq[k] - dp[k];
-    x.corner_t.clear(), x.corner_e.clear();
-    walk_envelope(l0, sl, np, false, [&](std::size_t cur, double t0, double) {
-      x.corner_t.push_back(t0), x.corner_e.push_back(l0[cur] + sl[cur] * t0);
-    });
-    x.corner_t.push_back(1.0), x.corner_e.push_back(e1);
-    PatchCache::Side& side = rec->side;
-    const auto first = static_cast<std::uint32_t>(side.lines.size());
-    for (std::size_t k = 0; k < np; ++k) {
-      bool keep = std::max(dp[k], dq[k]) < upper + skin;
-      for (std::size_t c = 0; c < x.corner_t.size() && !keep; ++c)
-        keep = l0[k] + sl[k] * x.corner_t[c] - x.corner_e[c] < skin;
-      if (keep) side.lines.push_back(rec->o_planes[k]);
-    }
-    side.edges.push_back({v, w, first, static_cast<std::uint32_t>(side.lines.size()) - first});
   };
   std::int32_t hint = 0;  // the plane the last vertex classed was outside of
   const auto outside_plane = [&](Index v, const Vec3& pl) -> std::int32_t {  // a plane v is outside of, or -1
@@ -355,158 +188,104 @@ void add_edges(const PolytopeShape& s, const std::vector<Index>& verts, const Po
       if (!poly.is_edge(it)) continue;
       const Vec3 wl = local(w);
       // Both ends outside one plane: the edge is outside o.
-      if (kv >= 0 && distance(kv, wl) <= 0) {
-        if (rec) record(v, vl, w, wl, -std::max(distance(kv, vl), distance(kv, wl)));
-        continue;
-      }
+      if (kv >= 0 && distance(kv, wl) <= 0) continue;
       const std::int32_t kw = outside_plane(w, wl);
-      if (kw >= 0 && distance(kw, vl) <= 0) {
-        if (rec) record(v, vl, w, wl, -std::max(distance(kw, vl), distance(kw, wl)));
-        continue;
-      }
-      if (rec) record(v, vl, w, wl, -std::numeric_limits<double>::infinity());
+      if (kw >= 0 && distance(kw, vl) <= 0) continue;
       const std::size_t rv = row(v, vl), rw = row(w, wl);
-      edge_pieces(s, v, w, o, o_planes, sign, x.dist.data() + rv, x.dist.data() + rw, npp, nullptr, x, soft);
-    }
-  }
-}
-
-// add_edges from the cache's side c (patch_cache.h; valid: the same
-// candidate sets, the motion within the skin): the kept edges, taken in the
-// order add_edges takes them (this call's `verts`), each over its kept lines
-// in the order of this call's `o_planes`. The same pieces as add_edges.
-void cached_edges(const PolytopeShape& s, const std::vector<Index>& verts, const PolytopeShape& o,
-                  const std::vector<Index>& o_planes, double sign, const PatchCache::Side& c, EdgeScratch& x,
-                  SoftDepth& soft) {
-  const ConvexPolytope& poly = *s.poly;
-  if (x.pos_of.size() < o.poly->planes().size()) x.pos_of.resize(o.poly->planes().size());
-  for (std::size_t k = 0; k < o_planes.size(); ++k) x.pos_of[o_planes[k]] = static_cast<std::uint32_t>(k);
-  if (x.first_edge.size() < poly.size()) x.first_edge.resize(poly.size());
-  x.groups.begin(poly.size());
-  for (std::size_t i = 0; i < c.edges.size(); ++i)
-    if (x.groups.mark(c.edges[i].v)) x.first_edge[c.edges[i].v] = static_cast<std::uint32_t>(i);
-  const Frame frame(s, o);
-  for (const Index v : verts) {
-    if (x.groups.stamp[v] != x.groups.generation) continue;
-    const Vec3 vl = frame.local(poly, v);
-    for (std::size_t i = x.first_edge[v]; i < c.edges.size() && c.edges[i].v == v; ++i) {
-      const PatchCache::Edge& e = c.edges[i];
-      const Vec3 wl = frame.local(poly, e.w);
-      // The kept lines by their position in o_planes (insertion sort: a few).
-      if (e.count == 0) continue;  // (a kept edge keeps the line of its U: not reached)
-      const std::size_t n = e.count, npp = (n + EdgeScratch::kLanes - 1) / EdgeScratch::kLanes * EdgeScratch::kLanes;
-      x.kpos.resize(npp), x.kplane.resize(npp), x.kdp.resize(npp), x.kdq.resize(npp);
-      if (x.l0.size() < npp) x.l0.resize(npp), x.slope.resize(npp), x.line_plane.resize(npp);
-      for (std::size_t j = 0; j < n; ++j) {
-        const Index plane = c.lines[e.first + j];
-        const std::uint32_t pos = x.pos_of[plane];
-        std::size_t at = j;
-        for (; at > 0 && x.kpos[at - 1] > pos; --at) x.kpos[at] = x.kpos[at - 1], x.kplane[at] = x.kplane[at - 1];
-        x.kpos[at] = pos, x.kplane[at] = plane;
+      const double* dp = x.dist.data() + rv;
+      const double* dq = x.dist.data() + rw;
+      // Which lines can be on the envelope E(t) = min_k l_k(t), 4 planes at a
+      // time. Every line lies below max(dp[k], dq[k]) on the edge, so E lies
+      // below U = min_k max(dp[k], dq[k]): if U <= 0 the edge is outside o
+      // (one plane has both ends outside), and a line on E dips below U
+      // somewhere (min(dp[k], dq[k]) <= U). And E lies below the line a lowest
+      // at t = 0 and the line b lowest at t = 1, so a line on E at t has
+      // l_k(t) <= l_a(t) and l_k(t) <= l_b(t): with f = l_k - l_a (f0 >= 0)
+      // and g = l_k - l_b (g1 >= 0), f <= 0 on [f0 / (f0 - f1), 1] when
+      // f1 <= 0, g <= 0 on [0, g0 / (g0 - g1)] when g0 <= 0, and the two
+      // meet iff f0 (g1 - g0) + g0 (f0 - f1) <= 0. Among nearly coplanar
+      // faces (a flat face of an angular grain) that keeps a few of some 30
+      // lines below U. A slack of 1e-9 of the depths keeps the lines that
+      // the walk below could take by its own tolerance.
+      const Lanes* const lp = reinterpret_cast<const Lanes*>(dp);
+      const Lanes* const lq = reinterpret_cast<const Lanes*>(dq);
+      const std::size_t blocks = npp / EdgeScratch::kLanes;
+      Lanes u = lp[0] > lq[0] ? lp[0] : lq[0], e0 = lp[0], e1 = lq[0];
+      for (std::size_t i = 1; i < blocks; ++i) {
+        const Lanes hi = lp[i] > lq[i] ? lp[i] : lq[i];
+        u = hi < u ? hi : u;
+        e0 = lp[i] < e0 ? lp[i] : e0;
+        e1 = lq[i] < e1 ? lq[i] : e1;
       }
-      for (std::size_t j = 0; j < npp; ++j) {
-        const bool real = j < n;
-        const ConvexPolytope::Plane& pl = o.poly->planes()[x.kplane[real ? j : 0]];
-        x.kdp[j] = real ? plane_distance(pl, vl) : std::numeric_limits<double>::infinity();
-        x.kdq[j] = real ? plane_distance(pl, wl) : std::numeric_limits<double>::infinity();
-        if (!real) x.kpos[j] = 0;
+      const double upper = std::min(std::min(u[0], u[1]), std::min(u[2], u[3]));
+      if (upper <= 0) continue;
+      const double min0 = std::min(std::min(e0[0], e0[1]), std::min(e0[2], e0[3]));
+      const double min1 = std::min(std::min(e1[0], e1[1]), std::min(e1[2], e1[3]));
+      std::size_t a = 0, b = 0;
+      while (dp[a] != min0) ++a;
+      while (dq[b] != min1) ++b;
+      const double slack = 1e-9 * std::max({std::abs(upper), std::abs(min0), std::abs(min1)});
+      const Lanes pa = lanes(dp[a]), qa = lanes(dq[a]), pb = lanes(dp[b]), qb = lanes(dq[b]);
+      const Lanes up = lanes(upper), tol = lanes(slack), tol2 = lanes(slack * slack);
+      // The lines kept, compacted: value at t = 0 and slope along the edge, and their plane.
+      double* const l0 = x.l0.data();
+      double* const sl = x.slope.data();
+      std::uint32_t* const pl = x.line_plane.data();
+      std::size_t n = 0;
+      for (std::size_t i = 0; i < blocks; ++i) {
+        const Lanes p0 = lp[i], q0 = lq[i];
+        const Lanes f0 = p0 - pa, f1 = q0 - qa, g0 = p0 - pb, g1 = q0 - qb;
+        const Mask keep = ((p0 < q0 ? p0 : q0) <= up) & (f1 <= tol) & (g0 <= tol) &
+                          (f0 * (g1 - g0) + g0 * (f0 - f1) <= tol2 + tol * (f0 - f1 + g1 - g0));
+        if (!(keep[0] | keep[1] | keep[2] | keep[3])) continue;
+        for (std::size_t j = 0; j < EdgeScratch::kLanes; ++j) {
+          const std::size_t k = i * EdgeScratch::kLanes + j;
+          l0[n] = dp[k], sl[n] = dq[k] - dp[k], pl[n] = static_cast<std::uint32_t>(k);
+          n += keep[j] != 0;
+        }
       }
-      edge_pieces(s, v, e.w, o, o_planes, sign, x.kdp.data(), x.kdq.data(), npp, x.kpos.data(), x, soft);
+      // Lower envelope of those lines: from t = 0, the lowest line there
+      // (ties: the one falling fastest), up to the first line crossing below
+      // it, which continues it (ties: again the one falling fastest), and so on.
+      std::size_t cur = 0;
+      for (std::size_t j = 1; j < n; ++j)
+        if (l0[j] < l0[cur] || (l0[j] == l0[cur] && sl[j] < sl[cur])) cur = j;
+      const Vec3 p = s.pos + s.scale * (s.rot * poly.vertex(v));
+      const Vec3 e = s.scale * (s.rot * (poly.vertex(w) - poly.vertex(v)));
+      double t0 = 0;
+      while (t0 < 1) {
+        const double slope = sl[cur], lc = l0[cur];
+        if (lc + slope * t0 <= 0 && slope <= 0) break;  // the envelope is concave: outside from here on
+        double t1 = 1;
+        std::size_t next = cur;
+        for (std::size_t j = 0; j < n; ++j) {
+          const double sk = sl[j];
+          if (!(sk < slope)) continue;
+          // Line j meets the current one at tc = (l0[j] - lc) / (slope - sk)
+          // (slope - sk > 0): divide only when it can be the next crossing.
+          const double num = l0[j] - lc, den = slope - sk;
+          if (!(num < (t1 + 1e-12) * den)) continue;
+          const double tc = num / den;
+          if (!(tc > t0)) continue;
+          // The earliest crossing; of crossings equally early within rounding
+          // the line falling fastest. Slopes fall at every switch: at most np.
+          const bool earlier = tc < t1 - 1e-12;
+          const bool tied = !earlier && tc <= t1 + 1e-12 && next != cur && sk < sl[next];
+          if (earlier || tied) t1 = std::min(t1, tc), next = j;
+        }
+        soft.add_linear_piece(p + t0 * e, p + t1 * e, (lc + slope * t0) * o.scale, (lc + slope * t1) * o.scale,
+                              sign * (o.rot * o.poly->planes()[o_planes[pl[cur]]].m));
+        if (next == cur) break;
+        cur = next;
+        t0 = t1;
+      }
     }
   }
-}
-
-// Whether the vertices `now` are the set `kept` (w: scratch stamps).
-bool same_set(const std::vector<Index>& now, const std::vector<Index>& kept, std::size_t n, Walk& w) {
-  if (now.size() != kept.size()) return false;
-  w.begin(n);
-  for (const Index v : kept) w.mark(v);
-  for (const Index v : now)
-    if (w.stamp[v] != w.generation) return false;
-  return true;
-}
-
-// No fill where the largest skin would last fewer calls (a falling grain).
-constexpr std::uint32_t kMinPredicted = 4;
-
-enum class Use { kPlain, kCached, kFill };
-
-// What this call does with the pair's cache (patch_cache.h): reuse it
-// (valid), fill it (then the skin is set in c), or neither (probing the
-// motion, or backing off).
-Use plan(PatchCache& c, const PolytopeShape& a, const PolytopeShape& b, const std::vector<Index>& va,
-         const std::vector<Index>& vb, Walk& w) {
-  const PolytopeShape* s[2] = {&a, &b};
-  const PolytopeShape* o[2] = {&b, &a};
-  if (c.hulls[0] != a.poly || c.hulls[1] != b.poly) {
-    const std::uint32_t fills = c.fill_count, uses = c.use_count;
-    c = PatchCache{}, c.hulls[0] = a.poly, c.hulls[1] = b.poly, c.fill_count = fills, c.use_count = uses;
-  }
-  const Frame f[2] = {Frame(a, b), Frame(b, a)};
-  const auto keep_frames = [&] {
-    for (int i = 0; i < 2; ++i) c.side[i].to_o = f[i].to_o, c.side[i].off = f[i].off;
-  };
-  if (c.phase == PatchCache::Phase::kCold) {
-    if (c.skip > 0) {
-      --c.skip;
-      return Use::kPlain;
-    }
-    keep_frames(), c.phase = PatchCache::Phase::kProbed, c.uses = 0;
-    return Use::kPlain;
-  }
-  // The motion since the fill (or the probe), per side in o's local units.
-  double moved[2];
-  for (int i = 0; i < 2; ++i)
-    moved[i] = (f[i].to_o - c.side[i].to_o).norm() * s[i]->poly->bounding_radius() + (f[i].off - c.side[i].off).norm();
-  if (c.phase == PatchCache::Phase::kFilled) {
-    const bool near = 2 * moved[0] + c.side[0].tie < c.side[0].skin && 2 * moved[1] + c.side[1].tie < c.side[1].skin;
-    if (near && same_set(va, c.side[0].verts, a.poly->size(), w) && same_set(vb, c.side[1].verts, b.poly->size(), w)) {
-      ++c.uses, ++c.use_count;
-      return Use::kCached;
-    }
-    if (c.uses < PatchCache::kMinUses) {
-      c.fails = std::min(c.fails + 1, 6u);
-      c.skip = std::min(PatchCache::kMaxSkip, 1u << c.fails);
-    } else {
-      c.fails = 0;
-    }
-    if (c.skip > 0) {
-      c.phase = PatchCache::Phase::kCold;
-      return Use::kPlain;
-    }
-  }
-  // Fill: a skin for kTargetUses calls at the motion per call seen since
-  // the fill or the probe (world units), within the bounds.
-  double rate = 0, size = 0;
-  for (int i = 0; i < 2; ++i) {
-    rate = std::max(rate, moved[i] * o[i]->scale / (c.uses + 1));
-    size = std::max(size, s[i]->poly->bounding_radius() * s[i]->scale);
-  }
-  const double skin = std::clamp(2.0 * rate * PatchCache::kTargetUses, PatchCache::kMinSkin * size,
-                                 PatchCache::kMaxSkin * size);
-  // A pair too fast for the largest skin to last kMinPredicted calls (a
-  // falling grain) does not fill: it backs off as a fill that served nothing.
-  if (skin < 2.0 * rate * kMinPredicted) {
-    c.fails = std::min(c.fails + 1, 6u);
-    c.skip = std::min(PatchCache::kMaxSkip, 1u << c.fails);
-    c.phase = PatchCache::Phase::kCold;
-    return Use::kPlain;
-  }
-  for (int i = 0; i < 2; ++i) {
-    PatchCache::Side& side = c.side[i];
-    side.skin = skin / o[i]->scale;
-    side.tie = PatchCache::kTie * (o[i]->poly->bounding_radius() +
-                                   s[i]->poly->bounding_radius() * s[i]->scale / o[i]->scale);
-    side.verts = i == 0 ? va : vb;
-    side.edges.clear(), side.lines.clear();
-  }
-  keep_frames(), c.phase = PatchCache::Phase::kFilled, c.uses = 0, ++c.fill_count;
-  return Use::kFill;
 }
 
 }  // namespace
 
-void contact_patch(const PolytopeShape& a, const PolytopeShape& b, ContactResult& r, PatchCache* cache) {
+void contact_patch(const PolytopeShape& a, const PolytopeShape& b, ContactResult& r) {
   if (!r.touching) return;
   const ConvexPolytope &pa = *a.poly, &pb = *b.poly;
   if (pa.planes().empty() || pb.planes().empty()) return;
@@ -530,18 +309,8 @@ void contact_patch(const PolytopeShape& a, const PolytopeShape& b, ContactResult
 
   SoftDepth soft(b.pos);
   thread_local EdgeScratch scratch;
-  const Use use = cache ? plan(*cache, a, b, va, vb, scratch.sets) : Use::kPlain;
-  if (use == Use::kCached) {
-    cached_edges(a, va, b, qb, -1.0, cache->side[0], scratch, soft);
-    cached_edges(b, vb, a, qa, 1.0, cache->side[1], scratch, soft);
-  } else if (use == Use::kFill) {
-    Recorder ra{cache->side[0], qb}, rb{cache->side[1], qa};
-    add_edges(a, va, b, qb, -1.0, scratch, soft, &ra);
-    add_edges(b, vb, a, qa, 1.0, scratch, soft, &rb);
-  } else {
-    add_edges(a, va, b, qb, -1.0, scratch, soft);
-    add_edges(b, vb, a, qa, 1.0, scratch, soft);
-  }
+  add_edges(a, va, b, qb, -1.0, scratch, soft);
+  add_edges(b, vb, a, qa, 1.0, scratch, soft);
   // Nothing inside (an overlap too thin to resolve) or a force against the
   // normal (soft_depth.h): the point contact of the penetration depth stays.
   soft.finish(r, n);

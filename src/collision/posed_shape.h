@@ -7,7 +7,6 @@
 #pragma once
 
 #include "collision/contact_result.h"
-#include "collision/patch_cache.h"
 #include "collision/shape_kind.h"
 #include "collision/simplex_cache.h"
 #include "core/types.h"
@@ -43,7 +42,6 @@ struct PairCache {
   Index hint_a = 0, hint_b = 0;  // support-vertex hints of the two shapes
   bool warm = false;             // dir and hints come from a previous step
   SimplexCache simplex;          // polytope pairs: the last GJK simplex (simplex_cache.h)
-  PatchCacheSlot patch;          // polytope pairs: the kept contact features (patch_cache.h; not checkpointed)
 };
 
 // A sub-contact of a pair: its geometry and its id within the pair (0 for a

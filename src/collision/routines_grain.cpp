@@ -23,7 +23,7 @@ int sphere_polytope(const PosedShape& a, const PosedShape& b, PairCache& c, Pair
 int polytope_polytope(const PosedShape& a, const PosedShape& b, PairCache& c, PairCache*, SubContact* out) {
   PolytopeShape pa{&a.geometry_as<ConvexPolytope>(), *a.rot, a.pos, a.scale, c.hint_a};
   PolytopeShape pb{&b.geometry_as<ConvexPolytope>(), *b.rot, b.pos, b.scale, c.hint_b};
-  out[0] = {collide_convex(pa, pb, c.dir, c.warm, &c.simplex, c.patch.get()), 0};
+  out[0] = {collide_convex(pa, pb, c.dir, c.warm, &c.simplex), 0};
   c.hint_a = pa.hint;
   c.hint_b = pb.hint;
   c.warm = true;

@@ -10,20 +10,19 @@
 #include <array>
 #include <cassert>
 #include <limits>
-#include <utility>
 
 namespace grainlab {
 
 namespace {
 
-// Moves the warm-start caches of pairs that survive from `old_pairs` into
+// Keeps the warm-start caches of pairs that survive from `old_pairs` into
 // `pairs` (both sorted by key): a merge join, no hashing.
-void carry_history(std::vector<CandidatePair>& old_pairs, std::vector<CandidatePair>& pairs) {
+void carry_history(const std::vector<CandidatePair>& old_pairs, std::vector<CandidatePair>& pairs) {
   std::size_t j = 0;
   for (CandidatePair& p : pairs) {
     const auto k = p.key();
     while (j < old_pairs.size() && old_pairs[j].key() < k) ++j;
-    if (j < old_pairs.size() && old_pairs[j].key() == k) p = std::move(old_pairs[j]);
+    if (j < old_pairs.size() && old_pairs[j].key() == k) p = old_pairs[j];
   }
 }
 

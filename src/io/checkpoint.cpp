@@ -42,12 +42,10 @@ namespace grainlab {
 
 // A new field in these structs must be written below (and the version bumped).
 static_assert(sizeof(ContactResult) == 104, "ContactResult changed: update io/checkpoint.cpp and kCheckpointVersion");
-// PairCache::patch is a pure accelerator (collision/patch_cache.h: a cold one
-// gives the same bits): it is not written and reads back cold.
-static_assert(sizeof(PairCache) == 72, "PairCache changed: update io/checkpoint.cpp and kCheckpointVersion");
+static_assert(sizeof(PairCache) == 64, "PairCache changed: update io/checkpoint.cpp and kCheckpointVersion");
 // CandidatePair::first_contact is a checked hint, not state: it is not written
 // and reads back as kUnknownContacts.
-static_assert(sizeof(CandidatePair) == 88, "CandidatePair changed: update io/checkpoint.cpp and kCheckpointVersion");
+static_assert(sizeof(CandidatePair) == 80, "CandidatePair changed: update io/checkpoint.cpp and kCheckpointVersion");
 static_assert(sizeof(Contact) == 200, "Contact changed: update io/checkpoint.cpp and kCheckpointVersion");
 
 namespace {

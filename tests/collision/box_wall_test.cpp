@@ -56,7 +56,7 @@ TEST(BoxWall, AGrainOverOneFaceMeetsThatFacesPlaneAsBruteForceAndGjkSay) {
     local[k] = s * (wall.half[k] + rng.uniform(-0.3, 1.1) * r);
     const PosedShape grain = grainlab::testing::posed_polytope(hull.poly, rot, qb, wall.pos + wall.rot * local, scale);
 
-    PairCache cache{grain.pos - wall.pos, 0, 0, false, {}, {}};
+    PairCache cache{grain.pos - wall.pos, 0, 0, false, {}};
     SubContact out[kMaxSubContacts];
     ASSERT_EQ(collide_shapes(wall.posed(), grain, cache, out), 1);
     EXPECT_FALSE(cache.warm) << "trial " << trial << ": GJK ran for a grain over a face";
@@ -99,7 +99,7 @@ TEST(BoxWall, AGrainOverAnEdgeTakesGjk) {
   const double scale = 0.5;
   const PosedShape grain = grainlab::testing::posed_polytope(
       hull.poly, rot, qb, wall.pos + wall.rot * Vec3(wall.half.x(), 0, wall.half.z() + 0.1 * scale), scale);
-  PairCache cache{grain.pos - wall.pos, 0, 0, false, {}, {}};
+  PairCache cache{grain.pos - wall.pos, 0, 0, false, {}};
   SubContact out[kMaxSubContacts];
   ASSERT_EQ(collide_shapes(wall.posed(), grain, cache, out), 1);
   EXPECT_TRUE(cache.warm);  // GJK/EPA ran

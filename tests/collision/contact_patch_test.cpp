@@ -96,6 +96,21 @@ TEST(ContactPatch, PointMovesContinuouslyAsTheTopBoxTilts) {
 
 namespace {
 
+// A box of half extents `half` whose faces are each a cloud of points pushed
+// in or out by up to `jitter` of the size: hulled, many nearly coplanar
+// triangles, like the flat faces of a 1000-face angular grain.
+TestHull jittered_box_hull(Rng& rng, int points_per_face, double jitter, const Vec3& half) {
+  std::vector<Vec3> pts;
+  for (int ax = 0; ax < 3; ++ax)
+    for (int side = -1; side <= 1; side += 2)
+      for (int i = 0; i < points_per_face; ++i) {
+        Vec3 p(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
+        p[ax] = side * (1 + rng.uniform(-jitter, 0));
+        pts.push_back(p.cwiseProduct(half));
+      }
+  return convex_hull(pts);
+}
+
 // The contact of the pair by brute force, from the definition in patch.cpp:
 // every edge of each shape, against the planes of the other's faces through
 // its vertices beyond the first shape's supporting plane along the normal;

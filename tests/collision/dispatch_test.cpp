@@ -35,7 +35,7 @@ TEST(Dispatch, FlippedPairIsTheDirectRoutineMirrored) {
   int touching = 0;
   for (int k = 0; k < 50; ++k) {
     sphere.pos = poly.pos + Vec3(rng.uniform(-1.5, 1.5), rng.uniform(-1.5, 1.5), rng.uniform(-1.5, 1.5));
-    PairCache direct{sphere.pos - poly.pos, 0, 3, false, {}, {}}, flipped{poly.pos - sphere.pos, 3, 0, false, {}, {}};
+    PairCache direct{sphere.pos - poly.pos, 0, 3, false, {}}, flipped{poly.pos - sphere.pos, 3, 0, false, {}};
     SubContact rd[kMaxSubContacts], rf[kMaxSubContacts];
     ASSERT_EQ(collide_shapes(sphere, poly, direct, rd), 1);
     ASSERT_EQ(collide_shapes(poly, sphere, flipped, rf), 1);

@@ -152,21 +152,6 @@ inline TestHull random_blob_hull(Rng& rng, int n, double lo = 0.6, double hi = 1
   return mapped(convex_hull(pts), random_linear(rng, lo, hi));
 }
 
-// A box of half extents `half` whose faces are each a cloud of points pushed
-// in or out by up to `jitter` of the size: hulled, many nearly coplanar
-// triangles, like the flat faces of a 1000-face angular grain.
-inline TestHull jittered_box_hull(Rng& rng, int points_per_face, double jitter, const Vec3& half) {
-  std::vector<Vec3> pts;
-  for (int ax = 0; ax < 3; ++ax)
-    for (int side = -1; side <= 1; side += 2)
-      for (int i = 0; i < points_per_face; ++i) {
-        Vec3 p(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
-        p[ax] = side * (1 + rng.uniform(-jitter, 0));
-        pts.push_back(p.cwiseProduct(half));
-      }
-  return convex_hull(pts);
-}
-
 // Box with half extents `half` (8 vertices, 3 neighbours each), 12 triangles.
 inline TestHull box_hull(const Vec3& half) {
   std::vector<Vec3> pts;
