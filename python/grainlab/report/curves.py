@@ -7,9 +7,6 @@ from .plotting import ALL_COLOR, BAND_COLOR, Figure, all_band_figure, pct_axis, 
 from .reading import NO_PEAK, get, num
 
 
-# ---------------------------------------------------------------------------
-# The figures of one run, one function each.
-
 def fig_stress_ratio(run, out_dir):
     """Fig. 10a: F/N against shear strain, with the peak marked and phi = atan(F/N) on the right."""
     f = Figure("Stress ratio against shear strain", "Fig. 10a",

@@ -21,7 +21,7 @@ COMPARISON_OUTPUTS = COMPARISON_PNGS + TRIAXIAL_COMPARISON_PNGS + ["mohr_coulomb
 
 
 # ---------------------------------------------------------------------------
-# Tables.
+# Numbers and tables.
 
 def fmt(v, spec=".3g", unit=""):
     v = num(v)

@@ -70,7 +70,7 @@ def all_band_figure(run, out_dir, name, cols, ylabel, title, paper, caption):
 
 
 # ---------------------------------------------------------------------------
-# Comparison figures.
+# Comparisons: one colour per run.
 
 def run_colors(runs):
     return {id(r): RUN_COLORS[k % len(RUN_COLORS)] for k, r in enumerate(runs)}
