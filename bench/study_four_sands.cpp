@@ -2,7 +2,7 @@
 // Appendices 2-3): glass beads, rounded, sub-angular and angular grains, each
 // prepared dense on its own index void ratios and sheared under 100 kPa; then
 // glass beads under the three damping sets of Appendix 2. Not a test: it
-// writes run folders and one comparison report (scripts/study_report.py).
+// writes run folders and one comparison report (python -m grainlab.report.study).
 //
 //   build/study_four_sands [--quick] [--out DIR] [--grainlab PATH] [--threads N]
 //                          [--only sands|damping|SAND,SAND...] [--seeds N] [--estimate]
@@ -540,7 +540,8 @@ int main(int argc, char** argv) {
     study["sitting_wall_s"] = all.seconds();  // this sitting; each run's own is its run_wall_s
     save(o, study);
     if (g_stop) return 130;  // study.json has every run done so far
-    fmt::print("study done in {:.0f} s: {}/study.json; report: /usr/bin/python3 scripts/study_report.py {}\n",
+    fmt::print("study done in {:.0f} s: {}/study.json; report: PYTHONPATH=build/python /usr/bin/python3 -m "
+               "grainlab.report.study {}\n",
                all.seconds(), o.out, o.out);
   } catch (const std::exception& e) {
     fmt::print(stderr, "study_four_sands: {}\n", e.what());

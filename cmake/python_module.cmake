@@ -1,18 +1,21 @@
 # The Python package grainlab, assembled in build/python/grainlab/: the pure
-# Python sources of python/grainlab/ copied there, the compiled extension
-# grainlab._grainlab (src/python/module.cpp) beside them. So
+# Python sources of python/grainlab/ (with the subpackage report/) copied
+# there, the compiled extension grainlab._grainlab (src/python/module.cpp)
+# beside them. So
 #   PYTHONPATH=build/python /usr/bin/python3 -c "import grainlab"
 # works with nothing installed. Included by CMakeLists.txt when pybind11 is found.
 set(python_package_dir ${CMAKE_BINARY_DIR}/python/grainlab)
 
-file(GLOB python_sources CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/python/grainlab/*.py
-     ${CMAKE_SOURCE_DIR}/python/grainlab/*.pyi ${CMAKE_SOURCE_DIR}/python/grainlab/py.typed)
+file(GLOB_RECURSE python_sources CONFIGURE_DEPENDS RELATIVE ${CMAKE_SOURCE_DIR}/python/grainlab
+     ${CMAKE_SOURCE_DIR}/python/grainlab/*.py ${CMAKE_SOURCE_DIR}/python/grainlab/*.pyi
+     ${CMAKE_SOURCE_DIR}/python/grainlab/py.typed)
+list(FILTER python_sources EXCLUDE REGEX "__pycache__")
 set(python_copies)
-foreach(src ${python_sources})
-  get_filename_component(name ${src} NAME)
+foreach(name ${python_sources})  # name: relative to python/grainlab (report/cli.py for the subpackage)
   add_custom_command(OUTPUT ${python_package_dir}/${name}
-                     COMMAND ${CMAKE_COMMAND} -E copy_if_different ${src} ${python_package_dir}/${name}
-                     DEPENDS ${src}
+                     COMMAND ${CMAKE_COMMAND} -E copy_if_different ${CMAKE_SOURCE_DIR}/python/grainlab/${name}
+                             ${python_package_dir}/${name}
+                     DEPENDS ${CMAKE_SOURCE_DIR}/python/grainlab/${name}
                      VERBATIM)
   list(APPEND python_copies ${python_package_dir}/${name})
 endforeach()

@@ -1,5 +1,6 @@
 #!/usr/bin/python3
-"""Fabricate a plausible grainlab direct shear or triaxial run folder, for testing scripts/report.py.
+"""Fabricate a plausible grainlab direct shear or triaxial run folder, for testing the report
+(grainlab.report, python/grainlab/report/).
 
     /usr/bin/python3 scripts/make_fake_run.py OUT_DIR [--preset CLASS] [--seed N]
                                              [--no-analysis] [--no-roundness]
@@ -7,8 +8,8 @@
                                              [--phi DEG] [--cohesion KPA] [--phi-cs DEG]
                                              [--cohesion-cs KPA] [--preset CLASS] [--seed N]
 
-Writes exactly the files of the run-folder contract that report.py reads
-(see the docstring of scripts/report.py):
+Writes exactly the files of the run-folder contract that the report reads
+(see the docstring of python/grainlab/report/__init__.py):
 
     OUT_DIR/series.csv                 one row per 0.1 % of shear strain, 0 .. 10 %
     OUT_DIR/run.json                   config, preparation, peaks, final, timings

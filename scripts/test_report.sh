@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
-# Tests scripts/report.py on fabricated run folders (scripts/make_fake_run.py).
+# Tests the report, the Python package grainlab.report (python/grainlab/report/),
+# on fabricated run folders (scripts/make_fake_run.py): the package as the
+# grainlab binary embeds it (`grainlab report --write-package`, checked equal to
+# the source), run with `python3 -m grainlab.report`, and `grainlab report`.
 # Exits non-zero on the first failure. Needs Debian's python3 with matplotlib
-# and numpy (override with PY=/path/to/python3), and for the triaxial
-# comparison, whose Mohr-Coulomb fit the engine writes, the grainlab binary
+# and numpy (override with PY=/path/to/python3) and the grainlab binary
 # (GRAINLAB=/path/to/grainlab; ctest sets it; default build/grainlab).
 #
 #   bash scripts/test_report.sh
@@ -16,6 +18,16 @@ trap 'rm -rf "$tmp"' EXIT
 
 fail() { echo "FAIL: $*" >&2; exit 1; }
 pass() { echo "ok: $*"; }
+
+# The package as the binary embeds it, which must be the source's.
+[ -x "$GRAINLAB" ] || fail "no grainlab binary at $GRAINLAB (build it, or set GRAINLAB=/path/to/grainlab)"
+"$GRAINLAB" report --write-package "$tmp/pkg" >/dev/null || fail "grainlab report --write-package failed"
+diff -r -x __pycache__ "$here/../python/grainlab/report" "$tmp/pkg/grainlab/report" >&2 \
+  || fail "$GRAINLAB embeds another grainlab.report than python/grainlab/report (above): rebuild it"
+pass "grainlab report --write-package writes python/grainlab/report as it is"
+# python3 -m grainlab.report ARGS (and report_study: -m grainlab.report.study) from that copy.
+report() { PYTHONPATH="$tmp/pkg" PYTHONDONTWRITEBYTECODE=1 "$PY" -m grainlab.report "$@"; }
+report_study() { PYTHONPATH="$tmp/pkg" PYTHONDONTWRITEBYTECODE=1 "$PY" -m grainlab.report.study "$@"; }
 
 # A valid PNG starts with the 8 bytes 89 50 4E 47 0D 0A 1A 0A.
 is_png() { [ "$(head -c 8 "$1" | od -An -tx1 | tr -d ' \n')" = "89504e470d0a1a0a" ]; }
@@ -55,10 +67,17 @@ done
 pass "make_fake_run.py writes every file of the contract"
 
 # --- one run -----------------------------------------------------------------------
-out="$("$PY" "$here/report.py" "$tmp/runs/angular")" || fail "report.py failed on a complete run"
+out="$(report "$tmp/runs/angular")" || fail "grainlab.report failed on a complete run"
 check_report "$tmp/runs/angular/report" "${single_pngs[@]}"
-grep -q "index.html" <<<"$out" || fail "report.py did not print the path of index.html"
-for png in "${single_pngs[@]}"; do grep -q "$png" <<<"$out" || fail "report.py did not list $png"; done
+# The page's text is the one checked in (written by scripts/report.py before the report became the package
+# grainlab.report, its footer aside): make_fake_run.py is seeded, the page holds the run folder's path.
+[ "$(sed "s|$(cd "$tmp/runs/angular" && pwd -P)|{RUN}|g" "$tmp/runs/angular/report/index.html")" \
+  = "$(cat "$here/../tests/data/report/angular_index.html")" ] \
+  || fail "the page of runs/angular differs from tests/data/report/angular_index.html: $(diff <(sed \
+     "s|$(cd "$tmp/runs/angular" && pwd -P)|{RUN}|g" "$tmp/runs/angular/report/index.html") \
+     "$here/../tests/data/report/angular_index.html" | head -5)"
+grep -q "index.html" <<<"$out" || fail "grainlab.report did not print the path of index.html"
+for png in "${single_pngs[@]}"; do grep -q "$png" <<<"$out" || fail "grainlab.report did not list $png"; done
 if grep -q "not available" "$tmp/runs/angular/report/index.html"; then
   fail "a complete run's report says something is not available"
 fi
@@ -87,13 +106,13 @@ j["preparation"].update({"void_ratio": 0.5292, "bulk_void_ratio": 0.432, "relati
                          "relative_density_own": 0.922, "own_e_min": 0.41, "own_e_max": 0.67})
 json.dump(j, open(p, "w"))
 PYEOF
-"$PY" "$here/report.py" "$tmp/runs/own" >/dev/null || fail "report.py failed on a run prepared on its own indices"
+report "$tmp/runs/own" >/dev/null || fail "grainlab.report failed on a run prepared on its own indices"
 grep -q "on the bulk e</th><td>92.2 % (the grains&#x27; own e<sub>min</sub> / e<sub>max</sub> 0.410 / 0.670)\|on the bulk e</th><td>92.2 % (the grains' own e<sub>min</sub> / e<sub>max</sub> 0.410 / 0.670)" \
   "$tmp/runs/own/report/index.html" || fail "D_r on the own indices does not say it is on the bulk e"
 pass "results table: whole and bulk void ratios, and the one D_r is on"
 
 # --- both runs: comparison in the first run's sibling folder -----------------------
-"$PY" "$here/report.py" "$tmp/runs/angular" "$tmp/runs/beads" >/dev/null || fail "comparison report failed"
+report "$tmp/runs/angular" "$tmp/runs/beads" >/dev/null || fail "comparison report failed"
 check_report "$tmp/runs/comparison/report" "${comparison_pngs[@]}"
 grep -q "angular" "$tmp/runs/comparison/report/index.html" || fail "comparison table lacks the angular run"
 grep -q "glass-beads" "$tmp/runs/comparison/report/index.html" || fail "comparison table lacks the glass-beads run"
@@ -101,22 +120,22 @@ pass "comparison report: index.html and its 2 PNGs in runs/comparison/report"
 
 # --- --out, and a comparison without roundness --------------------------------------
 "$PY" "$here/make_fake_run.py" "$tmp/runs/noround" --no-roundness >/dev/null
-"$PY" "$here/report.py" "$tmp/runs/noround" "$tmp/runs/beads" --out "$tmp/cmp" >/dev/null || fail "--out failed"
+report "$tmp/runs/noround" "$tmp/runs/beads" --out "$tmp/cmp" >/dev/null || fail "--out failed"
 check_report "$tmp/cmp" stress_strain_overlay.png peaks_vs_roundness.png
 grep -q "not available: run.json mean_roundness missing" "$tmp/cmp/index.html" \
   || fail "a run without mean_roundness is not noted"
-"$PY" "$here/report.py" "$tmp/runs/noround" "$tmp/runs/noround" --out "$tmp/cmp0" >/dev/null || fail "comparison without roundness failed"
+report "$tmp/runs/noround" "$tmp/runs/noround" --out "$tmp/cmp0" >/dev/null || fail "comparison without roundness failed"
 check_report "$tmp/cmp0" stress_strain_overlay.png
 [ ! -e "$tmp/cmp0/peaks_vs_roundness.png" ] || fail "scatter drawn although no run has a mean roundness"
 grep -q "not available: run.json mean_roundness missing" "$tmp/cmp0/index.html" || fail "missing scatter not noted"
 pass "--out, and the roundness scatter skipped with a note"
 
 # --- the report reads the engine's numbers and derives none ------------------------
-# No fitting, peak finding, tensors, eigenvalues or histograms in report.py: those are src/analysis/'s
+# No fitting, peak finding, tensors, eigenvalues or histograms in grainlab.report: those are src/analysis/'s
 # (the Mohr-Coulomb fit over several triaxial runs too: grainlab report writes mohr_coulomb.json).
 if grep -nE "einsum|polyfit|eigvalsh|linalg|histogram2d|arctan2|argmax|asin|def (kanatani|octahedral|dilation_angle|rose_histogram|pick_peak|mohr_coulomb_fit)" \
-    "$here/report.py"; then
-  fail "report.py derives a number the engine computes (the lines above)"
+    "$here/../python/grainlab/report/"*.py; then
+  fail "grainlab.report derives a number the engine computes (the lines above)"
 fi
 # Without the engine's Kanatani grid and dilation angle the report says so instead of computing them.
 cp -r "$tmp/runs/angular" "$tmp/runs/nogrid"
@@ -129,7 +148,7 @@ for which in ("all", "band"):
     del fab[which]["kanatani_grid"]
 json.dump(fab, open(p, "w"))
 PYEOF
-"$PY" "$here/report.py" "$tmp/runs/nogrid" >/dev/null || fail "report.py failed without kanatani_grid"
+report "$tmp/runs/nogrid" >/dev/null || fail "grainlab.report failed without kanatani_grid"
 page="$tmp/runs/nogrid/report/index.html"
 grep -q "not available: analysis/fabric.json &#x27;all&#x27; kanatani_grid missing" "$page" \
   || grep -q "not available: analysis/fabric.json 'all' kanatani_grid missing" "$page" \
@@ -142,7 +161,7 @@ pass "the report reads the engine's numbers: no Kanatani, Psi, dilation or fits 
 # --- a run without analysis/ --------------------------------------------------------
 cp -r "$tmp/runs/angular" "$tmp/runs/bare"
 rm -rf "$tmp/runs/bare/analysis" "$tmp/runs/bare/report"
-"$PY" "$here/report.py" "$tmp/runs/bare" >/dev/null || fail "report.py failed on a run without analysis/"
+report "$tmp/runs/bare" >/dev/null || fail "grainlab.report failed on a run without analysis/"
 page="$tmp/runs/bare/report/index.html"
 check_report "$tmp/runs/bare/report" stress_ratio.png vertical_displacement.png rotation.png \
   coordination_number.png fabric_psi.png
@@ -156,7 +175,7 @@ pass "run without analysis/: report with 'not available' notes"
 
 # --- the minimal run: no analysis files nor analysis columns ------------------------
 "$PY" "$here/make_fake_run.py" "$tmp/runs/minimal" --no-analysis >/dev/null
-"$PY" "$here/report.py" "$tmp/runs/minimal" >/dev/null || fail "report.py failed on a minimal run"
+report "$tmp/runs/minimal" >/dev/null || fail "grainlab.report failed on a minimal run"
 check_report "$tmp/runs/minimal/report" stress_ratio.png vertical_displacement.png
 grep -q "not available: series.csv columns rotation_mean_deg and rotation_band_deg missing" \
   "$tmp/runs/minimal/report/index.html" || fail "missing rotation columns not noted"
@@ -166,9 +185,9 @@ pass "minimal run (series.csv with the engine's columns only)"
 mkdir -p "$tmp/runs/empty"
 cp "$tmp/runs/angular/run.json" "$tmp/runs/empty/"
 set +e
-msg="$("$PY" "$here/report.py" "$tmp/runs/empty" 2>&1 >/dev/null)"; rc=$?
+msg="$(report "$tmp/runs/empty" 2>&1 >/dev/null)"; rc=$?
 set -e
-[ "$rc" -ne 0 ] || fail "report.py accepted a folder without series.csv"
+[ "$rc" -ne 0 ] || fail "grainlab.report accepted a folder without series.csv"
 [ "$(printf '%s\n' "$msg" | wc -l)" -eq 1 ] || fail "the refusal is not one line: $msg"
 grep -q "series.csv" <<<"$msg" || fail "the refusal does not name series.csv: $msg"
 [ ! -e "$tmp/runs/empty/report" ] || fail "a refused folder got a report folder"
@@ -176,7 +195,7 @@ pass "refuses a folder without series.csv: $msg"
 
 cp "$tmp/runs/angular/series.csv" "$tmp/runs/empty/"; rm "$tmp/runs/empty/run.json"
 set +e
-msg="$("$PY" "$here/report.py" "$tmp/runs/empty" 2>&1 >/dev/null)"; rc=$?
+msg="$(report "$tmp/runs/empty" 2>&1 >/dev/null)"; rc=$?
 set -e
 [ "$rc" -ne 0 ] && grep -q "run.json" <<<"$msg" || fail "a folder without run.json was not refused clearly: $msg"
 pass "refuses a folder without run.json: $msg"
@@ -186,7 +205,7 @@ oedometer_pngs=(e_log_sigma.png k0.png constrained_modulus.png)
 for loading in stages constant-rate; do
   "$PY" "$here/make_fake_run.py" "$tmp/oed/$loading" --test oedometer --loading "$loading" >/dev/null \
     || fail "make_fake_run.py --test oedometer --loading $loading failed"
-  "$PY" "$here/report.py" "$tmp/oed/$loading" >/dev/null || fail "report.py failed on an oedometer run ($loading)"
+  report "$tmp/oed/$loading" >/dev/null || fail "grainlab.report failed on an oedometer run ($loading)"
   check_report "$tmp/oed/$loading/report" "${oedometer_pngs[@]}"
   if grep -q "not available" "$tmp/oed/$loading/report/index.html"; then
     fail "the oedometer report ($loading) says something is not available"
@@ -224,18 +243,14 @@ assert set(j["triaxial"]) == {"void_ratio_at_shear", "peak_stress_ratio", "axial
                               "peak_friction_angle_deg", "critical_stress_ratio", "critical_friction_angle_deg",
                               "peak_dilatancy_angle_deg", "e50_Pa", "final_void_ratio"}, j["triaxial"]
 PYEOF
-"$PY" "$here/report.py" "$tmp/tx/s100" >/dev/null || fail "report.py failed on a triaxial run"
+report "$tmp/tx/s100" >/dev/null || fail "grainlab.report failed on a triaxial run"
 check_report "$tmp/tx/s100/report" triaxial_curves.png stress_path.png
 if grep -q "not available" "$tmp/tx/s100/report/index.html"; then fail "a complete triaxial run's report misses something"; fi
 grep -q "grainlab triaxial report" "$tmp/tx/s100/report/index.html" || fail "the triaxial run got another test's report"
 pass "single triaxial run: index.html with triaxial_curves.png and stress_path.png"
 
-# The comparison by grainlab report, which fits the envelopes (mohr_coulomb.json) and runs this report.py.
-[ -x "$GRAINLAB" ] || fail "no grainlab binary at $GRAINLAB (build it, or set GRAINLAB=/path/to/grainlab)"
+# The comparison by grainlab report, which fits the envelopes (mohr_coulomb.json) and runs grainlab.report.
 export GRAINLAB_PYTHON="$PY"
-report_py_of_binary="$("$GRAINLAB" report --print-script)"
-[ "$report_py_of_binary" = "$(cat "$here/report.py")" ] \
-  || fail "$GRAINLAB embeds another report.py than $here/report.py: rebuild it"
 # Given out of order: the page sorts them by sigma_3.
 out="$("$GRAINLAB" report "$tmp/tx/s200" "$tmp/tx/s50" "$tmp/tx/s100")" || fail "triaxial comparison failed: $out"
 cmp_dir="$tmp/tx/comparison/report"
@@ -276,19 +291,19 @@ pass "one sigma_3 twice: the fit refused with a note"
 set +e
 msg="$("$GRAINLAB" report "$tmp/tx/s100" "$tmp/runs/angular" --out "$tmp/tx/mixed" 2>&1 >/dev/null)"; rc=$?
 set -e
-[ "$rc" -ne 0 ] || fail "report.py compared a triaxial and a direct shear run"
+[ "$rc" -ne 0 ] || fail "grainlab.report compared a triaxial and a direct shear run"
 [ "$(printf '%s\n' "$msg" | wc -l)" -eq 1 ] || fail "the refusal is not one line: $msg"
 grep -q "s100: triaxial" <<<"$msg" && grep -q "angular: direct-shear" <<<"$msg" \
   || fail "the refusal does not say which run is which test: $msg"
 [ ! -e "$tmp/tx/mixed" ] || fail "a refused comparison wrote its folder"
 pass "refuses a triaxial + direct shear comparison: $msg"
 
-# report.py alone on triaxial runs has no fit to draw, and says where it comes from.
-"$PY" "$here/report.py" "$tmp/tx/s50" "$tmp/tx/s100" --out "$tmp/tx/nofit" >/dev/null || fail "report.py alone failed"
+# grainlab.report alone (python3 -m) on triaxial runs has no fit to draw, and says where it comes from.
+report "$tmp/tx/s50" "$tmp/tx/s100" --out "$tmp/tx/nofit" >/dev/null || fail "grainlab.report alone failed"
 grep -q "not available: mohr_coulomb.json missing (grainlab report fits" "$tmp/tx/nofit/index.html" \
-  || fail "report.py alone does not say that grainlab report writes the fit"
-[ ! -e "$tmp/tx/nofit/mohr_circles.png" ] || fail "report.py drew Mohr circles without the engine's fit"
-pass "report.py alone on triaxial runs: no fit of its own, a note instead"
+  || fail "grainlab.report alone does not say that grainlab report writes the fit"
+[ ! -e "$tmp/tx/nofit/mohr_circles.png" ] || fail "grainlab.report drew Mohr circles without the engine's fit"
+pass "grainlab.report alone on triaxial runs: no fit of its own, a note instead"
 
 # --- a lab test the report has no figures of: every series column against the progress column
 cp -r "$tmp/tx/s100" "$tmp/tx/newtest"
@@ -301,15 +316,15 @@ j["config"]["test"] = "ring-shear"
 j["ring-shear"] = j.pop("triaxial")
 json.dump(j, open(p, "w"))
 PYEOF
-"$PY" "$here/report.py" "$tmp/tx/newtest" >/dev/null || fail "report.py failed on a test it does not know"
+report "$tmp/tx/newtest" >/dev/null || fail "grainlab.report failed on a test it does not know"
 check_report "$tmp/tx/newtest/report" series.png
 grep -q "grainlab ring-shear report" "$tmp/tx/newtest/report/index.html" || fail "the unknown test's page lacks its name"
 grep -q "against axial_strain" "$tmp/tx/newtest/report/index.html" || fail "the unknown test's columns are not against its progress"
 grep -q "<th>peak_stress_ratio</th>" "$tmp/tx/newtest/report/index.html" || fail "the unknown test's own run.json group is not shown"
 [ "$(ls "$tmp/tx/newtest/report"/*.png | wc -l)" -eq 1 ] || fail "the unknown test got figures of a known test"
-pass "a test report.py does not know: every series column against its progress column (series.png)"
+pass "a test grainlab.report does not know: every series column against its progress column (series.png)"
 
-# The four-sand study report (scripts/study_report.py) on fabricated runs: a
+# The four-sand study report (grainlab.report.study) on fabricated runs: a
 # study.json naming four sand runs and three damping runs.
 mkdir -p "$tmp/study"
 for k in glass-beads:rounded:3 rounded:rounded:4 rounded-seed8:rounded:11 sub-angular:sub-angular:5 angular:angular:6 \
@@ -328,7 +343,7 @@ cat > "$tmp/study/study.json" <<'JSON'
              {"gamma_n": 40, "gamma_t": 20, "run_folder": "damping-40-20"},
              {"gamma_n": 80, "gamma_t": 40, "run_folder": "damping-80-40"}]}
 JSON
-out="$("$PY" "$here/study_report.py" "$tmp/study")" || fail "study_report.py failed: $out"
+out="$(report_study "$tmp/study")" || fail "grainlab.report.study failed: $out"
 check_report "$tmp/study/report" stress_strain_overlay.png peaks_vs_roundness.png micro_vs_roundness.png damping.png
 grep -q "e<sub>min</sub>" "$tmp/study/report/index.html" || fail "the study table lacks e_min"
 grep -q "peak friction angle falls strictly with roundness" <<<"$out" || fail "no trend line for phi_p: $out"
@@ -337,6 +352,6 @@ grep -q "peak friction angle falls strictly with roundness (means over seeds): .
   || fail "the trend does not give the rounded grains' mean and range over their two seeds: $out"
 grep -q "rounded seed 8" "$tmp/study/report/index.html" || fail "the study table lacks the second seed's row"
 grep -q "rounded: mean of 2 seeds" "$tmp/study/report/index.html" || fail "the study table lacks the rounded mean row"
-pass "study_report.py writes the study page with its figures, table and trends"
+pass "grainlab.report.study writes the study page with its figures, table and trends"
 
 echo "all report tests passed"

@@ -28,9 +28,22 @@ if "OMP_WAIT_POLICY" not in _os.environ and "GOMP_SPINCOUNT" not in _os.environ:
 from . import ct, grains, units  # noqa: E402
 from .config import Config, default_config, lab_tests  # noqa: E402
 from .errors import ConfigError, InputError, RunError  # noqa: E402
-from .run_folder import Run, report  # noqa: E402
+from .run_folder import Run, report as _report_runs  # noqa: E402
+from . import report  # noqa: E402  (the subpackage grainlab.report, callable: below)
 from .running import run  # noqa: E402
 from .sweep import sweep  # noqa: E402  (dask.distributed is imported only when a sweep runs)
+
+
+class _CallableReport(type(report)):
+    """grainlab.report is the report's subpackage (python -m grainlab.report, one module per figure kind) and,
+    called, grainlab.report(runs, out=None): the report of one run or the comparison of several
+    (grainlab.run_folder.report)."""
+
+    def __call__(self, runs, out=None):
+        return _report_runs(runs, out)
+
+
+report.__class__ = _CallableReport
 
 __version__ = "0.1.0"
 

@@ -11,7 +11,7 @@ import sys
 
 from . import _sweep_file, _sweep_task
 from ._sweep_cases import SweepError, plan_cases
-from .sweep import find_grainlab, import_distributed, sweep
+from .sweep import check_cases, find_grainlab, import_distributed, sweep
 
 EPILOG = """\
 The sweep file names a base config and what to vary (docs/sweeps.md):
@@ -48,6 +48,7 @@ def _parser():
 def _dry_run(kwargs, log):
     cases = plan_cases(kwargs["base"], kwargs["out"], grid=kwargs.get("grid"), seeds=kwargs.get("seeds"),
                        variants=kwargs.get("variants"))
+    check_cases(cases)
     done = 0
     for c in cases:
         finished = _sweep_task.is_finished(c.folder, c.config_hash)

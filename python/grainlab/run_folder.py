@@ -101,8 +101,9 @@ class Run:
                 if (folder / f"{kind}.pvd").is_file()}
 
     def report(self, out: Optional[PathLike] = None) -> Path:
-        """Writes the HTML report (``grainlab report FOLDER``; needs matplotlib) and returns the
-        path of its index.html: ``FOLDER/report/index.html``, or ``out/index.html``."""
+        """Writes the HTML report (as ``grainlab report FOLDER``, in this process by
+        :mod:`grainlab.report`; needs matplotlib) and returns the path of its index.html:
+        ``FOLDER/report/index.html``, or ``out/index.html``."""
         return report([self], out)
 
     def __repr__(self) -> str:
@@ -110,17 +111,25 @@ class Run:
 
 
 def report(runs: list, out: Optional[PathLike] = None) -> Path:
-    """The HTML report of one run, or the comparison of several (``grainlab report A B ...``);
-    returns the path of its index.html. ``runs``: Run objects or folders. A comparison goes to
-    ``A/../comparison/report/`` unless ``out`` is given."""
+    """The HTML report of one run, or the comparison of several (as ``grainlab report A B ...``,
+    in this process by :mod:`grainlab.report`); returns the path of its index.html. ``runs``:
+    Run objects or folders. A comparison goes to ``A/../comparison/report/`` unless ``out`` is
+    given. Prints what the command line prints (the page, the figures, their notes). Raises
+    ConfigError for a folder that is not a run folder or runs that cannot be compared, RunError
+    when matplotlib is missing."""
     folders = [os.fspath(r.folder if isinstance(r, Run) else r) for r in runs]
-    args = ["report", *folders] + (["--out", os.fspath(out)] if out is not None else [])
-    rc, _ = _grainlab.command(args)
-    if rc != 0:
-        raise RunError(f"the report was not written (`grainlab {' '.join(args)}` failed with {rc}; see its "
-                       "message above)")
-    if out is not None:
-        return Path(out) / "index.html"
-    if len(folders) == 1:
-        return Path(folders[0]) / "report" / "index.html"
-    return Path(folders[0]).resolve().parent / "comparison" / "report" / "index.html"
+    if not folders:
+        raise ConfigError("grainlab.report needs at least one run folder: grainlab.report([run_a, run_b, ...])")
+    try:
+        from .report import ReportError, write_report
+        from .report.reports import summary_lines
+        # The engine's part first (several triaxial runs: their Mohr-Coulomb fit, mohr_coulomb.json).
+        out_dir = _grainlab.prepare_report_folder(folders, "" if out is None else os.fspath(out))
+        page, figs = write_report(folders, out_dir or None)
+    except ImportError as e:
+        raise RunError(f"the report was not written: it needs matplotlib and numpy ({e}). Install them with "
+                       "`sudo apt-get install python3-matplotlib` (scripts/setup.sh does)") from None
+    except ReportError as e:
+        raise ConfigError(f"the report was not written: {e}") from None
+    print("\n".join(summary_lines(page, figs)))
+    return page

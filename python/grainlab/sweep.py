@@ -13,7 +13,9 @@ a LocalCluster of one single-threaded worker process per core by default, or the
 of `client` (a distributed.Client or a scheduler address such as "tcp://head:8786").
 Finished cases are skipped (a rerun does no work), a case with a checkpoint continues,
 a case whose worker dies is resubmitted by Dask and continues from its checkpoint, a
-failing case is reported and the others go on. At the end: OUT/cases.csv (and
+failing case is reported and the others go on. Before any case runs, every case's config is
+checked as `grainlab run` checks it (an unknown key or an impossible value in the grid or a
+variant is refused at once, with the command line's message). At the end: OUT/cases.csv (and
 cases.parquet with pyarrow) and the comparison report OUT/report/index.html.
 
 `python -m grainlab._sweep_main SWEEP.toml` (what `grainlab sweep` runs) reads a sweep file;
@@ -27,8 +29,9 @@ import subprocess
 import time
 import uuid
 
-from . import _sweep_table, _sweep_task
+from . import _grainlab, _sweep_table, _sweep_task
 from ._sweep_cases import Case, SweepError, plan_cases
+from .errors import ConfigError
 
 __all__ = ["sweep", "SweepResult", "SweepError", "Case"]
 
@@ -52,6 +55,18 @@ class SweepResult:
     def stopped(self):
         """The names of the cases stopped by a signal (Ctrl-C); the next sweep continues them."""
         return [c.name for c in self.cases if self.results.get(c.name, {}).get("status") == "stopped"]
+
+
+def check_cases(cases):
+    """Checks every case's config as `grainlab run config.toml` does before it starts (the same
+    code, in this process; no file is read or written): the first case the command line would
+    refuse raises SweepError with its message, before any case runs."""
+    for case in cases:
+        try:
+            _grainlab.config_toml(case.config_text, "config.toml")
+        except ConfigError as e:
+            raise SweepError("case %s would be refused by `grainlab run`: %s Its values: %s"
+                             % (case.name, e, ", ".join("%s = %r" % kv for kv in case.inputs.items()))) from None
 
 
 def find_grainlab(grainlab=None):
@@ -195,6 +210,7 @@ def sweep(base, grid=None, seeds=None, client=None, out="runs/sweep", workers=No
     """
     log = log or (lambda *a: None)
     cases = plan_cases(base, out, grid=grid, seeds=seeds, variants=variants)
+    check_cases(cases)
     if not isinstance(threads, int) or isinstance(threads, bool) or threads < 0:
         raise SweepError("threads = %r: give each run's thread count, an integer >= 0 (0: automatic)" % (threads,))
     if workers is not None and (not isinstance(workers, int) or isinstance(workers, bool) or workers < 1):

@@ -1,5 +1,5 @@
 // What the report draws of a set of contact normals (paper Fig. 15), sampled
-// here so that scripts/report.py only plots.
+// here so that the report (grainlab.report) only plots.
 //
 // Rose histogram. Each normal is counted as n and -n (normals have no sign),
 // binned by n_z (uniform in [-1, 1]) and the azimuth atan2(n_y, n_x) (uniform

@@ -1,9 +1,10 @@
 // `grainlab report RUN_DIR [RUN_DIR ...] [--out DIR]`: the HTML report of one
-// run, or a comparison of several, by scripts/report.py. The script is
-// compiled into the binary (cmake/embed_text.cmake), written to a temporary
-// folder and run with a Python that has matplotlib and numpy (report.h).
-// Several triaxial runs first get their Mohr-Coulomb fit written next to
-// the comparison (io/mohr_coulomb_file.h), which the script draws.
+// run, or a comparison of several, by the Python package grainlab.report
+// (python/grainlab/report/). The package is compiled into the binary
+// (cmake/embed_files.cmake), written to a temporary folder and run with a
+// Python that has matplotlib and numpy (report.h). Several triaxial runs first
+// get their Mohr-Coulomb fit written next to the comparison
+// (io/mohr_coulomb_file.h), which the report draws.
 #include "apps/commands.h"
 #include "apps/report.h"
 #include "core/error.h"
@@ -69,7 +70,7 @@ struct TempFolder {
   TempFolder() {
     std::string pattern = (std::filesystem::temp_directory_path() / "grainlab-report-XXXXXX").string();
     if (!mkdtemp(pattern.data()))
-      throw RunError(fmt::format("cannot create a temporary folder like '{}' for the report script: {}", pattern,
+      throw RunError(fmt::format("cannot create a temporary folder like '{}' for the report's package: {}", pattern,
                                  std::strerror(errno)));
     path = pattern;
   }
@@ -82,8 +83,23 @@ struct TempFolder {
 struct ReportOptions {
   std::vector<std::string> runs;
   std::string out;
-  bool print_script = false;
+  std::string write_package;
 };
+
+// grainlab/__init__.py of the package written out: the report needs nothing
+// else of grainlab (whose own __init__ loads the compiled module).
+constexpr const char* kPackageInit =
+    "\"\"\"grainlab.report alone, as `grainlab report` writes it out (the report's package, Python\n"
+    "source): run `python3 -m grainlab.report RUN_DIR [--out DIR]` with this folder's parent on\n"
+    "PYTHONPATH. The rest of the grainlab package (import grainlab: build/python) is not here.\"\"\"\n";
+
+// Runs `python -m grainlab.report ARGS` from the package in `root`, put first
+// on sys.path (before the working folder, which might hold another grainlab).
+constexpr const char* kLauncher =
+    "import runpy, sys\n"
+    "sys.dont_write_bytecode = True\n"
+    "sys.path.insert(0, sys.argv.pop(1))\n"
+    "runpy.run_module('grainlab.report', run_name='__main__', alter_sys=True)\n";
 
 }  // namespace
 
@@ -109,6 +125,32 @@ std::string missing_matplotlib_message() {
       which);
 }
 
+void write_report_package(const std::filesystem::path& dir) {
+  std::vector<std::pair<std::string, std::string>> files = report_package_files();
+  files.emplace_back("grainlab/__init__.py", kPackageInit);
+  for (const auto& [name, text] : files) {
+    const std::filesystem::path path = dir / name;
+    std::error_code ec;
+    std::filesystem::create_directories(path.parent_path(), ec);
+    std::ofstream f(path, std::ios::binary);
+    f << text;
+    if (ec || !f.flush())
+      throw RunError(fmt::format("cannot write the report's package file '{}': check that {} is writable and has "
+                                 "space", path.string(), dir.string()));
+  }
+}
+
+std::string prepare_report_folder(const std::vector<std::string>& run_dirs, const std::string& out) {
+  const std::vector<std::filesystem::path> folders(run_dirs.begin(), run_dirs.end());
+  if (!is_triaxial_comparison(folders)) return out;
+  // The report's default folder for a comparison: RUN_A/../comparison/report.
+  const std::string out_dir =
+      out.empty() ? (std::filesystem::canonical(folders.front()).parent_path() / "comparison" / "report").string()
+                  : out;
+  write_mohr_coulomb_file(folders, out_dir);
+  return out_dir;
+}
+
 int run_report(const std::vector<std::string>& run_dirs, const std::string& out) {
   const std::optional<std::string> python = report_python();
   if (!python) {
@@ -116,24 +158,10 @@ int run_report(const std::vector<std::string>& run_dirs, const std::string& out)
     return -1;
   }
   const TempFolder tmp;
-  const std::filesystem::path script = tmp.path / "report.py";
-  {
-    std::ofstream f(script, std::ios::binary);
-    f << report_script_text();
-    if (!f.flush())
-      throw RunError(fmt::format("cannot write the report script to '{}': check the space in {}", script.string(),
-                                 tmp.path.parent_path().string()));
-  }
-  std::vector<std::string> args = {*python, script.string()};
+  write_report_package(tmp.path);
+  std::vector<std::string> args = {*python, "-c", kLauncher, tmp.path.string()};
   args.insert(args.end(), run_dirs.begin(), run_dirs.end());
-  std::string out_dir = out;
-  const std::vector<std::filesystem::path> folders(run_dirs.begin(), run_dirs.end());
-  if (is_triaxial_comparison(folders)) {
-    // The script's default folder for a comparison: RUN_A/../comparison/report.
-    if (out_dir.empty())
-      out_dir = (std::filesystem::canonical(folders.front()).parent_path() / "comparison" / "report").string();
-    write_mohr_coulomb_file(folders, out_dir);
-  }
+  const std::string out_dir = prepare_report_folder(run_dirs, out);
   if (!out_dir.empty()) args.insert(args.end(), {"--out", out_dir});
   const int rc = spawn_and_wait(args, false);
   if (rc < 0) throw RunError(fmt::format("could not start '{}' to run the report", *python));
@@ -151,12 +179,17 @@ Command add_report_command(CLI::App& app) {
       "and a c', phi' fit (also in mohr_coulomb.json). Needs Python 3 with matplotlib (python3-matplotlib)");
   cmd->add_option("runs", o->runs, "run folder(s) written by `grainlab run` (series.csv, run.json, analysis/)");
   cmd->add_option("--out", o->out, "folder for index.html and the PNGs instead of the default");
-  cmd->add_flag("--print-script", o->print_script, "print the embedded report script (scripts/report.py) and exit");
+  cmd->add_option("--write-package", o->write_package,
+                  "write the report's Python package, as compiled into this binary, to DIR/grainlab/report/*.py "
+                  "(and a DIR/grainlab/__init__.py) and exit; run it with `PYTHONPATH=DIR python3 -m "
+                  "grainlab.report RUN_DIR [--out DIR]`, to read or change the figures")
+      ->type_name("DIR");
   return [cmd, o]() -> int {
     if (!*cmd) return -1;
-    if (o->print_script) {
-      const std::string text = report_script_text();
-      std::fwrite(text.data(), 1, text.size(), stdout);
+    if (!o->write_package.empty()) {
+      write_report_package(o->write_package);
+      fmt::print("wrote the package grainlab.report ({} files) to {}\n", report_package_files().size(),
+                 (std::filesystem::path(o->write_package) / "grainlab" / "report").string());
       return 0;
     }
     if (o->runs.empty())

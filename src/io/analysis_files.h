@@ -1,5 +1,5 @@
 // The final analysis of a direct shear run: the files of the run folder's
-// analysis/ subfolder that scripts/report.py reads (its docstring is the
+// analysis/ subfolder that grainlab.report reads (its docstring is the
 // contract), each written atomically. The numbers are the analysis layer's
 // result structs (analysis/band_analysis.h, fabric_result.h, force_chains.h,
 // dilation.h), serialised here without further maths. SI units; heights in

@@ -1,6 +1,6 @@
 // mohr_coulomb.json: the Mohr-Coulomb envelopes fitted over several drained
 // triaxial runs (analysis/mohr_coulomb.h), written next to their comparison
-// report by `grainlab report` (scripts/report.py draws it, fits nothing).
+// report by `grainlab report` (grainlab.report draws it, fits nothing).
 //
 // Each run gives two circles, at its peak and at its critical state, from its
 // run.json: sigma_3 = config.consolidation.normal_stress (the cell pressure

@@ -1,4 +1,4 @@
-// The analysis entries of run.json (scripts/report.py reads them): the micromechanics ones
+// The analysis entries of run.json (grainlab.report reads them): the micromechanics ones
 // serialised from analysis/micromechanics.h,
 //   "mean_roundness"               mean Wadell roundness of the grains (each
 //                                  grain its shape's; spheres count 1)

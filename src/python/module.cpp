@@ -12,6 +12,7 @@
 // callback makes the run save its checkpoint and stop, as SIGTERM does for the
 // command line; run() then raises that exception.
 #include "apps/command_line.h"
+#include "apps/report.h"
 #include "apps/run_lab.h"
 #include "core/error.h"
 #include "io/config.h"
@@ -235,6 +236,10 @@ PYBIND11_MODULE(_grainlab, m) {
         "Runs a lab test as `grainlab run` does (apps::run_lab) with the GIL released; 0 when it finished, 130 when "
         "a KeyboardInterrupt or a callback's exception stopped it (a checkpoint is saved; the exception is then "
         "raised).");
+  m.def("prepare_report_folder", &apps::prepare_report_folder, py::arg("runs"), py::arg("out"),
+        "The report's output folder for these run folders and --out ('': the default), after writing what the "
+        "engine computes for it (several triaxial runs: mohr_coulomb.json there, the Mohr-Coulomb fit), as "
+        "`grainlab report` does before it runs grainlab.report.");
   m.def("command", &command, py::arg("args"), py::arg("capture") = false,
         "Runs `grainlab ARGS...` in this process; returns (exit code, standard output if capture else ''). A "
         "subcommand stopped by Ctrl-C returns 130, having kept what it could.");

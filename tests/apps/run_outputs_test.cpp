@@ -329,13 +329,25 @@ TEST(RunOutputs, ReportCallsNoPeakALargestValueAtTheEnd) {
   EXPECT_EQ(marks, at_end ? 2u : 1u);
 }
 
-TEST(ReportCommand, EmbedsTheScriptOfTheSourceTree) {
-  const fs::path source = fs::path(GRAINLAB_TEST_DATA).parent_path().parent_path() / "scripts" / "report.py";
+TEST(ReportCommand, EmbedsThePackageOfTheSourceTree) {
+  const fs::path source = fs::path(GRAINLAB_TEST_DATA).parent_path().parent_path() / "python" / "grainlab" / "report";
   const fs::path dir = fs::temp_directory_path() / ("grainlab-embed-test-" + std::to_string(::getpid()));
   fs::create_directories(dir);
-  const Result r = run_grainlab(dir, "report --print-script > embedded.py");
+  const Result r = run_grainlab(dir, "report --write-package pkg");
   EXPECT_EQ(r.exit_code, 0) << r.output;
-  EXPECT_EQ(read_file(dir / "embedded.py"), read_file(source)) << "rebuild: the binary embeds an old report.py";
+  // Every .py file of the source, with the same text, and no other.
+  std::size_t sources = 0;
+  for (const auto& e : fs::directory_iterator(source)) {
+    if (e.path().extension() != ".py") continue;
+    ++sources;
+    EXPECT_TRUE(read_file(dir / "pkg" / "grainlab" / "report" / e.path().filename()) == read_file(e.path()))
+        << "rebuild: the binary embeds an old " << e.path().filename();
+  }
+  std::size_t written = 0;
+  for (const auto& e : fs::directory_iterator(dir / "pkg" / "grainlab" / "report")) written += e.is_regular_file();
+  EXPECT_GT(sources, 10u);
+  EXPECT_EQ(written, sources) << "rebuild: the binary embeds a file the source no longer has, or lacks one";
+  EXPECT_TRUE(fs::is_regular_file(dir / "pkg" / "grainlab" / "__init__.py"));
   fs::remove_all(dir);
 }
 

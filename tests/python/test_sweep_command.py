@@ -1,8 +1,9 @@
 """`grainlab sweep SWEEP.toml`: the C++ command runs the Python sweep with this binary.
 
-A sweep with a case the CLI refuses reports that case with the CLI's message and exit
-code, finishes the others and writes the table and their comparison report; bad sweep
-files are refused with the file, line, what and how to fix, before anything runs;
+A sweep with a case that fails as it starts (a grain folder without meshes) reports that
+case with the CLI's message and exit code, finishes the others and writes the table and
+their report; bad sweep files, and grid or variant values `grainlab run` would refuse, are
+refused with the file, line (or case), what and how to fix, before anything runs;
 --dry-run lists the cases; a Python without Dask is told which Debian package to install.
 """
 
@@ -35,19 +36,21 @@ def inline_base(**kw):
 
 
 def test_a_failing_case_is_reported_and_the_others_finish(tmp_path):
+    # grains.folder "" generates the grains; an empty folder passes the config's checks (it exists)
+    # and fails as the run loads its grains.
+    (tmp_path / "empty").mkdir()
     text = ("workers = 2\n" + 'out = "runs/mixed"\n'
-            "[grid]\n" + '"consolidation.normal_stress" = [60e3, -5.0, 100e3]\n' + inline_base())
+            "[grid]\n" + '"grains.folder" = ["", "empty"]\n' + inline_base())
     p = run_sweep(str(tmp_path), text)
     assert p.returncode == 3, p.stdout + p.stderr
-    assert "case normal_stress--5 failed: " in p.stderr and "must be > 0" in p.stderr, p.stderr
+    assert "case folder-empty failed: " in p.stderr and "holds no .stl" in p.stderr, p.stderr
     out = tmp_path / "runs" / "mixed"
     with open(out / "cases.csv") as f:
         rows = {r["case"]: r for r in csv.DictReader(f)}
-    assert rows["normal_stress--5"]["status"] == "failed"
-    assert rows["normal_stress--5"]["exit_code"] == "2"
-    assert "consolidation.normal_stress = -5 is impossible" in rows["normal_stress--5"]["error"]
-    for ok in ("normal_stress-60000", "normal_stress-100000"):
-        assert rows[ok]["status"] == "finished" and float(rows[ok]["peaks.friction_angle_deg"]) > 0
+    assert rows["folder-empty"]["status"] == "failed"
+    assert rows["folder-empty"]["exit_code"] == "2"
+    assert "holds no .stl, .obj, .ply or .dat" in rows["folder-empty"]["error"]
+    assert rows["folder-_"]["status"] == "finished" and float(rows["folder-_"]["peaks.friction_angle_deg"]) > 0
     assert (out / "report" / "index.html").exists(), p.stdout
 
 
@@ -81,6 +84,13 @@ BAD_FILES = [
     ('base = "base.toml"\n[grid]\n"seed.value" = [1]\n', "'seed' is a value in the base config, not a table"),
     ('base = "base.toml"\n[grid]\n"shear" = [1]\n', "'shear' is a table of the config, not a key"),
     ('[base]\nseed = 1\nbox = 3\n[grid]\n"box.length" = [0.003]\n', "'box' is a value in the base config"),
+    # Every case's config is checked as `grainlab run` checks it, before any case runs.
+    ('base = "base.toml"\n[grid]\n"consolidation.normal_stress" = [60e3, -5.0]\n',
+     "consolidation.normal_stress = -5 is impossible: it must be > 0"),
+    ('base = "base.toml"\n[grid]\n"consolidation.normal_stres" = [1e5]\n',
+     "unknown key 'consolidation.normal_stres'. Did you mean 'normal_stress'?"),
+    ('base = "base.toml"\n[[variants]]\nname = "a"\n"material.preset" = "nope"\n',
+     'material.preset = "nope" is not a sand preset'),
 ]
 
 

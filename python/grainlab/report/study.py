@@ -1,12 +1,11 @@
-#!/usr/bin/python3
 """The four-sand study report (bench/study_four_sands.cpp): one HTML page comparing the sands.
 
-Usage:  /usr/bin/python3 scripts/study_report.py STUDY_DIR [--out DIR]   # -> STUDY_DIR/report/index.html
+Usage:  python3 -m grainlab.report.study STUDY_DIR [--out DIR]   # -> STUDY_DIR/report/index.html
 
 STUDY_DIR holds study.json (written by study_four_sands: per sand its own
 index void ratios e_min/e_max, the deposition friction found for Dr 0.9 and
 the run folder; the damping runs) and the run folders (series.csv, run.json,
-as `grainlab run` writes them). Like scripts/report.py (whose reading code and
+as `grainlab run` writes them). Like the run report (whose reading code and
 figures it shares) it derives no physics: it picks values from the engine's
 files (a peak's row, the row at 10 % strain) and draws them.
 
@@ -39,12 +38,12 @@ from pathlib import Path
 
 import numpy as np
 
-sys.dont_write_bytecode = True  # no __pycache__ in the source tree
-sys.path.insert(0, str(Path(__file__).resolve().parent))
-import report as rp  # noqa: E402  (scripts/report.py: Run, figures, page)
+from .comparison import fig_overlay, fig_peaks_vs_roundness
+from .html_page import COMPARISON_PNGS, esc, figure_html, fmt, prepare_out, write_page
+from .plotting import ALL_COLOR, BAND_COLOR, RUN_COLORS, Figure, pct_axis, plt
+from .reading import ReportError, Run, get, num
 
-plt = rp.plt
-STUDY_PNGS = rp.COMPARISON_PNGS + ["micro_vs_roundness.png", "damping.png", "angular_20.png"]
+STUDY_PNGS = COMPARISON_PNGS + ["micro_vs_roundness.png", "damping.png", "angular_20.png"]
 AT_STRAIN = 0.10  # the comparisons' strain (the paper's final strain; a shorter run: its end)
 FIRST_SEED = 7  # study_four_sands' first seed (a run folder named after the sand alone)
 
@@ -56,17 +55,17 @@ def value_at(run, column, strain=AT_STRAIN):
         return None
     s = run.series["shear_strain"]
     k = np.nonzero(s <= strain + 1e-9)[0]
-    return None if len(k) == 0 else rp.num(c[k[-1]])
+    return None if len(k) == 0 else num(c[k[-1]])
 
 
 class Sand:
     def __init__(self, study_dir, entry):
         self.entry = entry
-        self.run = rp.Run(study_dir / entry["run_folder"])
+        self.run = Run(study_dir / entry["run_folder"])
         self.name = entry["name"]
         self.seed = int(entry.get("seed", FIRST_SEED))
         self.run.label = self.name if self.seed == FIRST_SEED else f"{self.name} seed {self.seed}"
-        self.R = rp.num(self.run.info.get("mean_roundness"))
+        self.R = num(self.run.info.get("mean_roundness"))
         self.phi_p, self.strain_at_peak, _ = self.run.peak_friction()
         self.psi_p, _, _ = self.run.peak_dilation()
         self.rotation = value_at(self.run, "rotation_mean_deg")
@@ -74,9 +73,9 @@ class Sand:
         self.psi_fabric = self.run.peak_psi()
         # A Dr on the own indices is judged on the bulk void ratio, as the indices are.
         prep = self.run.info.get("preparation", {})
-        self.e = rp.num(prep.get("bulk_void_ratio") if "own_e_min" in prep else prep.get("void_ratio"))
-        self.dr = rp.num(rp.get(self.run.info, "preparation", "relative_density"))
-        self.wall = (rp.num(entry.get("preparation_wall_s")) or 0) + (rp.num(entry.get("run_wall_s")) or 0)
+        self.e = num(prep.get("bulk_void_ratio") if "own_e_min" in prep else prep.get("void_ratio"))
+        self.dr = num(get(self.run.info, "preparation", "relative_density"))
+        self.wall = (num(entry.get("preparation_wall_s")) or 0) + (num(entry.get("run_wall_s")) or 0)
 
 
 class Group:
@@ -124,7 +123,7 @@ def trend(groups, attr, falling, what):
 
 
 def fig_micro(sands, groups, out_dir):
-    f = rp.Figure("Mean rotation, coordination number and peak fabric factor against roundness", "Figs. 13b, 14b, 16b",
+    f = Figure("Mean rotation, coordination number and peak fabric factor against roundness", "Figs. 13b, 14b, 16b",
                   "Left: mean grain rotation at 10 % strain (series.csv rotation_mean_deg); middle: coordination "
                   "number at 10 % strain; right: the largest fabric factor &Psi; during shear (run.json "
                   "peaks.fabric_psi); each against the mean Wadell roundness of the sand's grains. With several "
@@ -138,8 +137,8 @@ def fig_micro(sands, groups, out_dir):
             f.missing(f"{attr} of every sand")
             continue
         means = sorted((g.R, getattr(g, attr)) for g in groups if g.R is not None and getattr(g, attr) is not None)
-        ax.plot([m[0] for m in means], [m[1] for m in means], "-", color=rp.ALL_COLOR)
-        ax.plot([p[0] for p in pts], [p[1] for p in pts], "o", color=rp.ALL_COLOR, ms=7)
+        ax.plot([m[0] for m in means], [m[1] for m in means], "-", color=ALL_COLOR)
+        ax.plot([p[0] for p in pts], [p[1] for p in pts], "o", color=ALL_COLOR, ms=7)
         for R, v, name in pts:
             ax.annotate(name, (R, v), xytext=(5, 4), textcoords="offset points", fontsize=8)
         ax.set_xlabel("mean grain roundness R (–)")
@@ -151,20 +150,20 @@ def fig_micro(sands, groups, out_dir):
 
 
 def fig_damping(runs, out_dir, notes):
-    f = rp.Figure("Glass beads under three damping sets", "Appendix 2, Fig. 18a, b",
+    f = Figure("Glass beads under three damping sets", "Appendix 2, Fig. 18a, b",
                   "Stress ratio (top) and cap displacement (bottom) of glass beads with the user Hertz law and "
                   "(&gamma;<sub>n</sub>, &gamma;<sub>t</sub>) = (20, 10), (40, 20), (80, 40).")
     if not runs:
         return f.missing("damping runs")
     fig, (a1, a2) = plt.subplots(2, 1, figsize=(7.0, 7.0), sharex=True)
     for k, r in enumerate(runs):
-        c = rp.RUN_COLORS[k % len(rp.RUN_COLORS)]
+        c = RUN_COLORS[k % len(RUN_COLORS)]
         a1.plot(r.strain_pct, r.col("stress_ratio"), color=c, lw=1.4, label=r.label)
         a2.plot(r.strain_pct, 1e3 * r.col("vertical_displacement_m"), color=c, lw=1.4, label=r.label)
     a1.set_ylabel("stress ratio F/N (–)")
     a1.legend(loc="lower right")
     a2.set_ylabel("cap displacement $d_v$ (mm)")
-    rp.pct_axis(a2)
+    pct_axis(a2)
     fig.tight_layout()
     for n in notes:
         f.notes.append(n)
@@ -172,19 +171,19 @@ def fig_damping(runs, out_dir, notes):
 
 
 def fig_angular(sand, out_dir, notes):
-    f = rp.Figure("Angular grains to 20 % strain", "Appendix 3, Fig. 19",
+    f = Figure("Angular grains to 20 % strain", "Appendix 3, Fig. 19",
                   "Stress ratio and cap displacement of the angular grains to 20 % strain; the shaded band is 15-20 %.")
     if sand is None:
         return f.missing("the angular run")
     r = sand.run
     fig, (a1, a2) = plt.subplots(2, 1, figsize=(7.0, 6.5), sharex=True)
-    a1.plot(r.strain_pct, r.col("stress_ratio"), color=rp.ALL_COLOR)
-    a2.plot(r.strain_pct, 1e3 * r.col("vertical_displacement_m"), color=rp.BAND_COLOR)
+    a1.plot(r.strain_pct, r.col("stress_ratio"), color=ALL_COLOR)
+    a2.plot(r.strain_pct, 1e3 * r.col("vertical_displacement_m"), color=BAND_COLOR)
     for a in (a1, a2):
         a.axvspan(15, 20, color="0.9")
     a1.set_ylabel("stress ratio F/N (–)")
     a2.set_ylabel("cap displacement $d_v$ (mm)")
-    rp.pct_axis(a2)
+    pct_axis(a2)
     fig.tight_layout()
     for n in notes:
         f.notes.append(n)
@@ -199,7 +198,8 @@ def spread_pct(values):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description="Comparison report of the four-sand study (bench/study_four_sands).")
+    ap = argparse.ArgumentParser(prog="python3 -m grainlab.report.study",
+                                 description="Comparison report of the four-sand study (bench/study_four_sands).")
     ap.add_argument("study", help="the study folder (study.json and the run folders)")
     ap.add_argument("--out", help="output folder (default STUDY/report)")
     a = ap.parse_args(argv)
@@ -207,7 +207,7 @@ def main(argv=None):
     try:
         study = json.loads((study_dir / "study.json").read_text())
     except (OSError, ValueError) as e:
-        print(f"study_report.py: error: cannot read {study_dir / 'study.json'}: {e}", file=sys.stderr)
+        print(f"grainlab.report.study: error: cannot read {study_dir / 'study.json'}: {e}", file=sys.stderr)
         return 1
     out_dir = Path(a.out) if a.out else study_dir / "report"
     try:
@@ -217,16 +217,16 @@ def main(argv=None):
         damping = []
         for d in study.get("damping", []):
             if "run_folder" in d and (study_dir / d["run_folder"] / "run.json").is_file():
-                r = rp.Run(study_dir / d["run_folder"])
+                r = Run(study_dir / d["run_folder"])
                 r.label = f"γn {d['gamma_n']:g}, γt {d['gamma_t']:g}"
                 damping.append(r)
-    except rp.ReportError as e:
-        print(f"study_report.py: error: {e}", file=sys.stderr)
+    except ReportError as e:
+        print(f"grainlab.report.study: error: {e}", file=sys.stderr)
         return 1
     if not sands:
-        print("study_report.py: error: study.json lists no finished sand run", file=sys.stderr)
+        print("grainlab.report.study: error: study.json lists no finished sand run", file=sys.stderr)
         return 1
-    rp.prepare_out(out_dir, STUDY_PNGS)
+    prepare_out(out_dir, STUDY_PNGS)
 
     groups = groups_of(sands)
     checks = [f"no finished run for: {', '.join(unfinished)}"] if unfinished else []
@@ -237,8 +237,8 @@ def main(argv=None):
 
     damping_notes = []
     if damping:
-        peaks = [rp.num(rp.get(r.info, "peaks", "stress_ratio")) for r in damping]
-        finals = [rp.num(r.col("vertical_displacement_m")[-1]) for r in damping]
+        peaks = [num(get(r.info, "peaks", "stress_ratio")) for r in damping]
+        finals = [num(r.col("vertical_displacement_m")[-1]) for r in damping]
         sp, sf = spread_pct(peaks), spread_pct(finals)
         damping_notes.append(f"peak F/N: {', '.join(f'{p:.4f}' for p in peaks if p is not None)}; spread "
                              f"{sp:.2f} % of the mean ({'within' if sp is not None and sp <= 2 else 'ABOVE'} the paper's 2 %)")
@@ -260,7 +260,7 @@ def main(argv=None):
                              f"(by {1e3 * d_dv_early:+.4f} mm between 10 and 15 %)")
         checks += angular_notes
 
-    figs = [rp.fig_overlay([s.run for s in sands], out_dir), rp.fig_peaks_vs_roundness([s.run for s in sands], out_dir),
+    figs = [fig_overlay([s.run for s in sands], out_dir), fig_peaks_vs_roundness([s.run for s in sands], out_dir),
             fig_micro(sands, groups, out_dir), fig_damping(damping, out_dir, damping_notes),
             fig_angular(angular, out_dir, angular_notes)]
 
@@ -270,17 +270,17 @@ def main(argv=None):
     rows = []
     for g in groups:
         for s in g.runs:
-            rows.append([rp.esc(s.run.label), rp.esc(s.run.preset), rp.fmt(s.R, ".3f"), rp.fmt(s.entry.get("e_min"), ".4f"),
-                         rp.fmt(s.entry.get("e_max"), ".4f"), rp.fmt(s.e, ".4f"),
-                         rp.fmt(None if s.dr is None else 100 * s.dr, ".1f"), rp.fmt(s.phi_p, ".2f"),
-                         rp.fmt(s.psi_p, ".2f"),
-                         rp.fmt(None if s.strain_at_peak is None else 100 * s.strain_at_peak, ".2f"),
-                         rp.fmt(s.rotation, ".2f"), rp.fmt(s.cn, ".3f"), rp.fmt(s.psi_fabric, ".3f"),
-                         rp.fmt(s.wall / 3600, ".2f")])
+            rows.append([esc(s.run.label), esc(s.run.preset), fmt(s.R, ".3f"), fmt(s.entry.get("e_min"), ".4f"),
+                         fmt(s.entry.get("e_max"), ".4f"), fmt(s.e, ".4f"),
+                         fmt(None if s.dr is None else 100 * s.dr, ".1f"), fmt(s.phi_p, ".2f"),
+                         fmt(s.psi_p, ".2f"),
+                         fmt(None if s.strain_at_peak is None else 100 * s.strain_at_peak, ".2f"),
+                         fmt(s.rotation, ".2f"), fmt(s.cn, ".3f"), fmt(s.psi_fabric, ".3f"),
+                         fmt(s.wall / 3600, ".2f")])
         if len(g.runs) > 1:
-            rows.append([f"<b>{rp.esc(g.name)}: mean of {len(g.runs)} seeds</b>", "", rp.fmt(g.R, ".3f"), "", "", "", "",
-                         rp.fmt(g.phi_p, ".2f"), rp.fmt(g.psi_p, ".2f"), "", rp.fmt(g.rotation, ".2f"),
-                         rp.fmt(g.cn, ".3f"), rp.fmt(g.psi_fabric, ".3f"), ""])
+            rows.append([f"<b>{esc(g.name)}: mean of {len(g.runs)} seeds</b>", "", fmt(g.R, ".3f"), "", "", "", "",
+                         fmt(g.phi_p, ".2f"), fmt(g.psi_p, ".2f"), "", fmt(g.rotation, ".2f"),
+                         fmt(g.cn, ".3f"), fmt(g.psi_fabric, ".3f"), ""])
     th = "".join(f"<th>{h}</th>" for h in head)
     body = "\n".join("<tr>" + "".join(f"<td>{c}</td>" for c in row) + "</tr>" for row in rows)
     table = (f'<table class="grid"><caption>Per run (e<sub>min</sub>, e<sub>max</sub>: the sand\'s own index void '
@@ -289,8 +289,8 @@ def main(argv=None):
     subtitle = (f"{len(groups)} sands, {len(sands)} runs{' (QUICK mode: tiny box, few faces; not the study)' if study.get('quick') else ''}, "
                 f"target D<sub>r</sub> {study.get('target_relative_density')}, {study.get('threads')} threads.")
     blocks = ["<h2>Table</h2>", table, "<h2>The paper's trends, measured</h2>", checks_html, "<h2>Figures</h2>"]
-    blocks += [rp.figure_html(f) for f in figs]
-    page = rp.write_page(out_dir, "grainlab four-sand study", subtitle, blocks)
+    blocks += [figure_html(f) for f in figs]
+    page = write_page(out_dir, "grainlab four-sand study", subtitle, blocks)
     print(f"report: {page.resolve()}")
     for c in checks:
         print(f"  {c}")
