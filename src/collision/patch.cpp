@@ -91,7 +91,10 @@ Lanes lanes(double v) { return Lanes{v, v, v, v}; }
 struct EdgeScratch {
   static constexpr std::size_t kLanes = 4;
   std::vector<double> mx, my, mz, c;  // plane k: distance c[k] - m[k] . x
+  // The rows of this call: the first `used` entries of `dist`, which only
+  // grows (no zero fill of each row before plane_distances writes it).
   std::vector<double> dist;
+  std::size_t used = 0;
   std::vector<std::uint32_t> row_of;  // per vertex: its row, valid where stamped in `rows`
   std::vector<std::int32_t> outside;  // per vertex: a plane it is outside of, or -1; valid where stamped in `classes`
   // One edge's candidate lines: depth at its start (o's local units), slope
@@ -149,15 +152,16 @@ void add_edges(const PolytopeShape& s, const std::vector<Index>& verts, const Po
   if (x.row_of.size() < poly.size()) x.row_of.resize(poly.size()), x.outside.resize(poly.size());
   x.rows.begin(poly.size());
   x.classes.begin(poly.size());
-  x.dist.clear();
+  x.used = 0;
   const Mat3 to_o = o.rot.transpose() * s.rot * (s.scale / o.scale);  // local s -> local o
   const Vec3 off = o.rot.transpose() * (s.pos - o.pos) / o.scale;
   const auto local = [&](Index v) -> Vec3 { return to_o * poly.vertex(v) + off; };
   const auto distance = [&](std::size_t k, const Vec3& pl) { return plane_distance(x, k, pl); };
   const auto row = [&](Index v, const Vec3& pl) -> std::size_t {  // v's row (dist may grow: an offset)
     if (!x.rows.mark(v)) return x.row_of[v];
-    const std::size_t r = x.dist.size();
-    x.dist.resize(r + npp);
+    const std::size_t r = x.used;
+    x.used = r + npp;
+    if (x.used > x.dist.size()) x.dist.resize(std::max(2 * x.dist.size(), x.used));
     plane_distances(x, npp, pl, x.dist.data() + r);
     x.row_of[v] = static_cast<std::uint32_t>(r);
     return r;
