@@ -128,27 +128,23 @@ TEST_F(TiffStructure, WellFormedFilesPassAndItkReadsThem) {
 }
 
 TEST_F(TiffStructure, EachBreakageIsRefusedByName) {
-  TiffSpec short_date;
-  short_date.date = "2026:12:06 22:00";  // 17 bytes with its NUL: ITK copied 20
-  EXPECT_NE(refusal(make_tiff(short_date)).find("DateTime (tag 306) holds 17 values"), std::string::npos);
-  TiffSpec loop;
-  loop.loop = true;
-  EXPECT_NE(refusal(make_tiff(loop)).find("comes back to the directory at byte"), std::string::npos);
-  TiffSpec past;
-  past.strip_offset = 1000;
-  EXPECT_NE(refusal(make_tiff(past)).find("strip 1 (15 bytes at byte 1000) lies past the file's end"),
-            std::string::npos);
-  TiffSpec short_strip;
-  short_strip.strip_bytes = 10;
-  EXPECT_NE(refusal(make_tiff(short_strip)).find("uncompressed strip 1 holds 10 bytes, fewer than the 15"),
-            std::string::npos);
-  TiffSpec twice;
-  twice.twice = true;
-  EXPECT_NE(refusal(make_tiff(twice)).find("tag 256 appears twice"), std::string::npos);
-  TiffSpec odd_type;
-  odd_type.photometric_type = 99;
-  EXPECT_NE(refusal(make_tiff(odd_type)).find("tag 262 has data type 99, which TIFF does not define"),
-            std::string::npos);
+  struct Case {
+    void (*breakage)(TiffSpec&);
+    const char* message;
+  };
+  const Case cases[] = {
+      {[](TiffSpec& t) { t.date = "2026:12:06 22:00"; },  // 17 bytes with its NUL: ITK copied 20
+       "DateTime (tag 306) holds 17 values"},
+      {[](TiffSpec& t) { t.loop = true; }, "comes back to the directory at byte"},
+      {[](TiffSpec& t) { t.strip_offset = 1000; }, "strip 1 (15 bytes at byte 1000) lies past the file's end"},
+      {[](TiffSpec& t) { t.strip_bytes = 10; }, "uncompressed strip 1 holds 10 bytes, fewer than the 15"},
+      {[](TiffSpec& t) { t.twice = true; }, "tag 256 appears twice"},
+      {[](TiffSpec& t) { t.photometric_type = 99; }, "tag 262 has data type 99, which TIFF does not define"}};
+  for (const Case& c : cases) {
+    TiffSpec t;
+    c.breakage(t);
+    EXPECT_NE(refusal(make_tiff(t)).find(c.message), std::string::npos) << c.message;
+  }
   const std::string whole = make_tiff(TiffSpec{});
   EXPECT_NE(refusal(whole.substr(0, whole.size() - 20)).find("runs past the file's end"), std::string::npos);
   EXPECT_NE(refusal(std::string("II*\0", 4)).find("fewer than a TIFF header's 8"), std::string::npos);
