@@ -124,14 +124,24 @@ class TiffWalk {
       if (entry.at > size_ || bytes > size_ - entry.at) {
         fail("the {} bytes of tag {} at byte {} lie past the file's end ({} bytes)", bytes, tag, entry.at, size_);
       }
-      if (tag == kDateTime && (entry.type != 2 || entry.count != 20)) {
-        fail("its DateTime (tag 306) holds {} values of type {}, where TIFF fixes 20 characters "
-             "('YYYY:MM:DD HH:MM:SS' and a NUL)", entry.count, entry.type);
-      }
+      if (tag == kDateTime) check_date_time(entry);
       if (!entries.emplace(tag, entry).second) fail("tag {} appears twice in one directory", tag);
     }
     const std::uint64_t next = first + n * entry_bytes;
     return big_ ? u64(next) : u32(next);
+  }
+
+  // ITK copies DateTime's 20 bytes ("YYYY:MM:DD HH:MM:SS" and a NUL, as TIFF
+  // fixes it) out of what libtiff read: the count, and one NUL more when the
+  // last is not one. Fewer made ITK read past libtiff's buffer.
+  void check_date_time(const Entry& e) {
+    std::uint8_t last = 0;
+    if (e.type == 2 && e.count > 0) read(e.at + e.count - 1, &last, 1);
+    const std::uint64_t held = e.count + (last != 0 ? 1 : 0);
+    if (e.type != 2 || held < 20) {
+      fail("its DateTime (tag 306) holds {} characters (type {}), fewer than the 20 TIFF fixes "
+           "('YYYY:MM:DD HH:MM:SS' and a NUL)", e.type == 2 ? held : 0, e.type);
+    }
   }
 
   // The tag's values as whole numbers (BYTE, SHORT, LONG, LONG8 and IFD types).

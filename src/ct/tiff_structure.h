@@ -9,7 +9,8 @@
 //              (a loop), at most 1,000,000 pages, each tag once
 //   entries    a known TIFF data type; a value that does not fit in the entry
 //              lies inside the file (offset + count x type size, without
-//              overflow); DateTime exactly 20 characters
+//              overflow); DateTime at least 20 characters with
+//              its NUL
 //   each page  ImageWidth, ImageLength 1 to 1,048,576; BitsPerSample 1 to 64;
 //              SamplesPerPixel 1 to 16; PlanarConfiguration 1 or 2; strips
 //              (RowsPerStrip >= 1) or tiles (TileWidth, TileLength >= 1),

@@ -134,7 +134,8 @@ TEST_F(TiffStructure, EachBreakageIsRefusedByName) {
   };
   const Case cases[] = {
       {[](TiffSpec& t) { t.date = "2026:12:06 22:00"; },  // 17 bytes with its NUL: ITK copied 20
-       "DateTime (tag 306) holds 17 values"},
+       "DateTime (tag 306) holds 17 characters (type 2), fewer than the 20"},
+      {[](TiffSpec& t) { t.date = "2026:12:06 22:00:0"; }, "DateTime (tag 306) holds 19 characters"},
       {[](TiffSpec& t) { t.loop = true; }, "comes back to the directory at byte"},
       {[](TiffSpec& t) { t.strip_offset = 1000; }, "strip 1 (15 bytes at byte 1000) lies past the file's end"},
       {[](TiffSpec& t) { t.strip_bytes = 10; }, "uncompressed strip 1 holds 10 bytes, fewer than the 15"},
