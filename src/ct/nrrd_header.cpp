@@ -19,7 +19,7 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr std::size_t kMaxHeaderLine = 64 * 1024;  // a header line: a field and a few numbers or a file name
-constexpr std::size_t kMaxFieldLine = 900;         // a field's line ("name: value"): what teem's messages hold
+constexpr std::size_t kMaxFieldLine = 900;         // a field's line ("name: value"): what teem's messages take
 
 // deflate (gzip) turns one byte into at most 1032 (its longest match, 258
 // bytes, costs at least 2 bits): a bound on what compressed data can hold.
@@ -162,8 +162,9 @@ NrrdHeader read_nrrd_header(const fs::path& path) {
       input_error("'{}': NRRD header line {} ('{}') is neither a field ('name: value'), a comment ('#') nor a "
                   "key/value pair ('key:=value'); the file is damaged, write it again",
                   path.string(), line_number, excerpt(line, 60));
-    // teem quotes a field it cannot parse whole in a message of at most 1024
-    // characters, on its stack: a longer line overflowed it (found by fuzzing).
+    // teem quotes a field it cannot parse whole in a message buffer of fixed
+    // size on its stack: a 4 kB line overflowed it (found by fuzzing), lines
+    // of 900 characters of every field it cannot parse do not.
     if (line.size() > kMaxFieldLine)
       input_error("'{}': NRRD header line {} ('{}') has {} characters, more than the {} a field of an NRRD header "
                   "takes (ITK's NRRD reader overflows on longer ones); the file is damaged, write it again",
