@@ -38,7 +38,7 @@ clean:
 # folder, each run for FUZZ_SECONDS or FUZZ_RUNS executions, whichever comes
 # first (scripts/run_fuzzers.sh; findings in $(FUZZ_BUILD)/fuzz-findings).
 FUZZ_BUILD ?= build-fuzz
-FUZZ_SECONDS ?= 300
+FUZZ_SECONDS ?= 600
 FUZZ_RUNS ?= 1000000
 CLANG_FLAGS = -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=clang++-14 -DCMAKE_C_COMPILER=clang-14
 fuzz: setup

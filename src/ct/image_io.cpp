@@ -4,7 +4,6 @@
 
 #include "core/error.h"
 #include "ct/itk_bridge.h"
-#include "ct/metaimage_header.h"
 #include "ct/nrrd_header.h"
 #include "ct/raw_volume.h"
 #include "ct/slice_stack.h"
@@ -78,7 +77,7 @@ void check_plausible_spacing(const ImageSource& source, const ImageHeader& h) {
 
 ImageHeader read_itk_header(const ImageSource& source) {
   const std::string path = source.path.string();
-  // NRRD: the unit and the data's length, which ITK neither passes on nor checks; MetaImage: the data's length.
+  // NRRD: the unit and the data's length, which ITK neither passes on nor checks (MetaImage, TIFF: itk_bridge).
   NrrdUnits units;
   units.source = "header field 'ElementSpacing' read as mm (MetaImage has no unit field)";
   if (itk_bridge::format_for(path) == "NRRD") {
@@ -86,7 +85,6 @@ ImageHeader read_itk_header(const ImageSource& source) {
     check_nrrd_data_size(nh, source.path);
     units = nrrd_units(nh, source.path);
   }
-  if (itk_bridge::format_for(path) == "MetaImage") check_metaimage_data_size(source.path);
   const itk_bridge::Header ih = itk_bridge::read_header(path);
   ImageHeader h;
   h.format = ih.format;

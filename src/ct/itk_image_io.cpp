@@ -4,6 +4,8 @@
 #include "ct/itk_bridge.h"
 
 #include "core/error.h"
+#include "ct/metaimage_header.h"
+#include "ct/tiff_structure.h"
 
 #include <itkImage.h>
 #include <itkImageFileReader.h>
@@ -137,6 +139,14 @@ void write_slice_as(const std::string& path, std::int64_t nx, std::int64_t ny, c
   write_image<Image>(path, image, false);
 }
 
+// grainlab's own strict reading of the structures ITK's MetaImage and TIFF
+// readers trust (a malformed header made them read past their buffers).
+void check_before_itk(const std::string& path) {
+  const std::string f = format_for(path);
+  if (f == "TIFF") check_tiff_structure(path);
+  if (f == "MetaImage") check_metaimage_header(path);
+}
+
 }  // namespace
 
 std::string format_for(const std::string& path) {
@@ -149,6 +159,7 @@ std::string format_for(const std::string& path) {
 }
 
 Header read_header(const std::string& path) {
+  check_before_itk(path);
   Header h;
   h.format = format_for(path);
   itk::ImageIOBase::Pointer io = image_io_for(path);
@@ -179,6 +190,7 @@ Header read_header(const std::string& path) {
 }
 
 std::vector<float> read_values(const std::string& path) {
+  check_before_itk(path);
   auto reader = itk::ImageFileReader<FloatImage>::New();
   reader->SetImageIO(image_io_for(path));
   reader->SetFileName(path);

@@ -6,10 +6,16 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <map>
+#include <sstream>
 #include <string>
+#include <string_view>
+#include <vector>
 
 namespace grainlab::ct {
 
@@ -17,9 +23,46 @@ namespace fs = std::filesystem;
 
 namespace {
 
+constexpr std::size_t kMaxValue = 1024;  // a value: a few numbers, a name or a file name
+
+constexpr std::array<std::string_view, 37> kFields{
+    "Comment",         "AcquisitionDate",    "ObjectType",      "ObjectSubType",
+    "NDims",           "Name",               "ID",              "ParentID",
+    "ParentName",      "FileFormatVersion",  "CompressedData",  "CompressedDataSize",
+    "BinaryData",      "BinaryDataByteOrderMSB", "ElementByteOrderMSB", "Color",
+    "Position",        "Origin",             "Offset",          "TransformMatrix",
+    "Rotation",        "Orientation",        "CenterOfRotation", "AnatomicalOrientation",
+    "ElementSpacing",  "DimSize",            "HeaderSize",      "HeaderSizePerSlice",
+    "Modality",        "SequenceID",         "ElementMin",      "ElementMax",
+    "ElementNumberOfChannels", "ElementSize", "ElementType",    "ElementDataFile",
+    "TransformType"};
+
 std::string trim(const std::string& s) {
   const auto a = s.find_first_not_of(" \t\r");
   return a == std::string::npos ? "" : s.substr(a, s.find_last_not_of(" \t\r") - a + 1);
+}
+
+std::string lower(std::string_view s) {
+  std::string out(s);
+  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return out;
+}
+
+// Edit distance (insertions, deletions, substitutions), without case.
+std::size_t edit_distance(std::string_view a_in, std::string_view b_in) {
+  const std::string a = lower(a_in), b = lower(b_in);
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = up;
+    }
+  }
+  return row[b.size()];
 }
 
 int element_bytes(const std::string& type) {
@@ -31,37 +74,210 @@ int element_bytes(const std::string& type) {
   return it == bytes.end() ? 0 : it->second;
 }
 
+struct Field {
+  std::string value;
+  int line = 0;
+};
+
+class Header {
+ public:
+  explicit Header(const fs::path& path) : path_(path) {}
+
+  // Reads the fields up to ElementDataFile; returns the header's bytes.
+  std::uint64_t read() {
+    std::ifstream in(path_, std::ios::binary);
+    std::uint64_t bytes = 0;
+    int n = 0;
+    constexpr std::size_t kMaxHeaderLine = 64 * 1024;
+    for (std::string line; bounded_getline(in, line, kMaxHeaderLine, path_.string(), "a MetaImage header");) {
+      bytes += line.size() + 1;
+      ++n;
+      if (trim(line).empty()) continue;
+      const auto eq = line.find('=');
+      if (eq == std::string::npos) fail(n, fmt::format("'{}' is not a 'Key = Value' field", excerpt(trim(line))),
+                                        "remove the line or write it as a field");
+      const std::string key = trim(line.substr(0, eq));
+      const std::string value = trim(line.substr(eq + 1));
+      check_key(key, n);
+      check_text(key, value, n);
+      if (fields_.count(key)) {
+        fail(n, fmt::format("field '{}' given a second time (first on line {})", key, fields_[key].line),
+             "keep one of them");
+      }
+      fields_[key] = {value, n};
+      if (key == "ElementDataFile") return bytes;  // the last field: the data follows
+    }
+    fail(n, "no 'ElementDataFile' field, which ends a MetaImage header (the data follows it)",
+         "end the header with 'ElementDataFile = LOCAL' (data in this file) or the data file's name");
+  }
+
+  bool has(const char* key) const { return fields_.count(key) != 0; }
+  const std::string& value(const char* key) const {
+    static const std::string none;
+    const auto it = fields_.find(key);
+    return it == fields_.end() ? none : it->second.value;
+  }
+  int line(const char* key) const { return has(key) ? fields_.at(key).line : 0; }
+
+  [[noreturn]] void fail(int line, const std::string& what, const std::string& fix) const {
+    input_error("'{}' (MetaImage header, line {}): {}; {}", path_.string(), line, what, fix);
+  }
+
+  // The field's value as `count` numbers (whole ones > 0, numbers > 0, or any finite numbers).
+  enum class Kind { Positive, PositiveWhole, Finite };
+  std::vector<double> numbers(const char* key, std::size_t count, Kind kind) const {
+    std::istringstream in(value(key));
+    std::vector<double> out;
+    for (std::string word; in >> word;) {
+      char* end = nullptr;
+      const double v = std::strtod(word.c_str(), &end);
+      const bool whole = v == std::floor(v) && word.find_first_not_of("0123456789+") == std::string::npos;
+      const bool ok = *end == '\0' && std::isfinite(v) && (kind == Kind::Finite || v > 0) &&
+                      (kind != Kind::PositiveWhole || (whole && v <= 2147483647.0));
+      if (!ok) {
+        fail(line(key), fmt::format("'{} = {}': '{}' is not {}", key, excerpt(value(key)), excerpt(word, 40),
+                                    kind == Kind::Finite         ? "a number"
+                                    : kind == Kind::Positive     ? "a number > 0"
+                                                                 : "a whole number > 0"),
+             fmt::format("give {} such numbers", count));
+      }
+      out.push_back(v);
+    }
+    if (out.size() != count) {
+      fail(line(key), fmt::format("'{} = {}' holds {} numbers, but NDims = {} calls for {}", key,
+                                  excerpt(value(key)), out.size(), value("NDims"), count),
+           "give one per axis (a matrix: NDims x NDims), or fix NDims");
+    }
+    return out;
+  }
+
+ private:
+  void check_key(const std::string& key, int n) const {
+    const bool printable = !key.empty() && std::all_of(key.begin(), key.end(), [](char c) {
+      return c > ' ' && c < 127;
+    });
+    if (!printable) fail(n, fmt::format("'{}' is not a field name", excerpt(key)), "fix or remove the line");
+    if (std::find(kFields.begin(), kFields.end(), key) != kFields.end()) return;
+    for (const std::string_view known : kFields) {
+      if (edit_distance(key, known) <= 2 && key.size() > 3) {
+        fail(n, fmt::format("'{}' is not a MetaImage field (a misspelt '{}'?)", key, known),
+             "correct its spelling (MetaImage field names are case-sensitive)");
+      }
+    }
+  }
+
+  void check_text(const std::string& key, const std::string& value, int n) const {
+    if (value.size() > kMaxValue) {
+      fail(n, fmt::format("the value of '{}' has {} characters, more than the {} a MetaImage field holds", key,
+                          value.size(), kMaxValue),
+           "shorten it");
+    }
+    for (const char c : value) {
+      const auto u = static_cast<unsigned char>(c);
+      if ((u < ' ' && c != '\t') || u == 127) {
+        fail(n, fmt::format("the value of '{}' holds the control character 0x{:02x}", key, u),
+             "the header is damaged, or this is not a MetaImage file: export the scan again");
+      }
+    }
+  }
+
+  fs::path path_;
+  std::map<std::string, Field> fields_;
+};
+
+bool is_bool(const std::string& v) {
+  const std::string l = lower(v);
+  return l == "true" || l == "false" || l == "t" || l == "f" || l == "1" || l == "0";
+}
+
+bool is_true(const std::string& v) {
+  const std::string l = lower(v);
+  return l == "true" || l == "t" || l == "1";
+}
+
+std::int64_t whole(const Header& h, const char* key, std::int64_t lowest, std::int64_t highest) {
+  const std::string& v = h.value(key);
+  char* end = nullptr;
+  const long long n = std::strtoll(v.c_str(), &end, 10);
+  if (v.empty() || *end != '\0' || n < lowest || n > highest) {
+    h.fail(h.line(key), fmt::format("'{} = {}' is not a whole number from {} to {}", key, excerpt(v), lowest, highest),
+           "fix the value");
+  }
+  return n;
+}
+
+// The header's fields, checked for what they are and against one another.
+void check_fields(const Header& h) {
+  if (!h.has("NDims")) h.fail(h.line("ElementDataFile"), "no 'NDims' field", "add 'NDims = 3' before it");
+  const auto dims = static_cast<std::size_t>(whole(h, "NDims", 1, 10));
+  using Kind = Header::Kind;
+  if (!h.has("DimSize")) h.fail(h.line("ElementDataFile"), "no 'DimSize' field", "add the image's size per axis");
+  long double voxels = 1;  // the image's voxels, bounded so that its byte count cannot overflow
+  for (const double n : h.numbers("DimSize", dims, Kind::PositiveWhole)) voxels *= n;
+  if (voxels > 0x1p50L) {
+    h.fail(h.line("DimSize"), fmt::format("'DimSize = {}' makes {:.3g} voxels, more than any scan", h.value("DimSize"),
+                                          static_cast<double>(voxels)),
+           "fix DimSize");
+  }
+  for (const char* key : {"ElementSpacing", "ElementSize"}) {
+    if (h.has(key)) h.numbers(key, dims, Kind::Positive);
+  }
+  for (const char* key : {"Offset", "Origin", "Position", "CenterOfRotation"}) {
+    if (h.has(key)) h.numbers(key, dims, Kind::Finite);
+  }
+  for (const char* key : {"TransformMatrix", "Rotation", "Orientation"}) {
+    if (h.has(key)) h.numbers(key, dims * dims, Kind::Finite);
+  }
+  if (!h.has("ElementType")) h.fail(h.line("ElementDataFile"), "no 'ElementType' field", "add it (e.g. MET_USHORT)");
+  if (element_bytes(h.value("ElementType")) == 0) {
+    h.fail(h.line("ElementType"), fmt::format("'ElementType = {}' is not a MetaImage element type",
+                                              excerpt(h.value("ElementType"))),
+           "use one of MET_UCHAR, MET_CHAR, MET_USHORT, MET_SHORT, MET_UINT, MET_INT, MET_ULONG, MET_LONG, "
+           "MET_ULONG_LONG, MET_LONG_LONG, MET_FLOAT, MET_DOUBLE");
+  }
+  for (const char* key : {"BinaryData", "CompressedData", "BinaryDataByteOrderMSB", "ElementByteOrderMSB"}) {
+    if (h.has(key) && !is_bool(h.value(key))) {
+      h.fail(h.line(key), fmt::format("'{} = {}' is neither True nor False", key, excerpt(h.value(key))),
+             "write True or False");
+    }
+  }
+  if (h.has("ElementNumberOfChannels")) whole(h, "ElementNumberOfChannels", 1, 64);
+  if (h.has("CompressedDataSize")) whole(h, "CompressedDataSize", 0, INT64_MAX);
+  if (h.has("HeaderSize")) whole(h, "HeaderSize", -1, INT64_MAX);
+}
+
 }  // namespace
 
-void check_metaimage_data_size(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::map<std::string, std::string> fields;
-  std::uint64_t header_bytes = 0;
-  constexpr std::size_t kMaxHeaderLine = 64 * 1024;  // a header line: a key and a few numbers or a file name
-  for (std::string line; bounded_getline(in, line, kMaxHeaderLine, path.string(), "a MetaImage header");) {
-    header_bytes += line.size() + 1;
-    const auto eq = line.find('=');
-    if (eq == std::string::npos) continue;
-    const std::string key = trim(line.substr(0, eq));
-    fields[key] = trim(line.substr(eq + 1));
-    if (key == "ElementDataFile") break;  // the last field: the data follows
-  }
-  auto field = [&](const char* key) { return fields.count(key) ? fields[key] : std::string(); };
-  const std::string data_file = field("ElementDataFile");
-  const int bytes = element_bytes(field("ElementType"));
-  if (data_file.empty() || bytes == 0 || field("CompressedData") == "True" || field("BinaryData") == "False") return;
-  if (data_file.rfind("LIST", 0) == 0 || data_file.find_first_of("% ") != std::string::npos) return;  // several files
-  std::uint64_t need = declared_bytes(field("DimSize"), bytes);
-  if (need == 0) return;  // ITK names the problem
-  const std::string channels = field("ElementNumberOfChannels");
-  if (!channels.empty()) need *= static_cast<std::uint64_t>(std::max(1LL, std::atoll(channels.c_str())));
-  DeclaredData d{path, "MetaImage",
-                 fmt::format("'DimSize = {}' of 'ElementType = {}'{}", field("DimSize"), field("ElementType"),
-                             channels.empty() ? "" : fmt::format(" x {} channels", channels)),
-                 need, path, header_bytes, false, "'DimSize' and 'ElementType'"};
+void check_metaimage_header(const fs::path& path) {
+  Header h(path);
+  const std::uint64_t header_bytes = h.read();
+  check_fields(h);
+  const std::string& data_file = h.value("ElementDataFile");
+  if (data_file.rfind("LIST", 0) == 0 || data_file.find('%') != std::string::npos) return;  // slice files: MetaIO's
+  fs::path data = path;
   if (data_file != "LOCAL") {
-    d.data = fs::path(data_file).is_absolute() ? fs::path(data_file) : path.parent_path() / data_file;
-    const std::int64_t skip = field("HeaderSize").empty() ? 0 : std::atoll(field("HeaderSize").c_str());
+    data = fs::path(data_file).is_absolute() ? fs::path(data_file) : path.parent_path() / data_file;
+    std::error_code ec;
+    if (!fs::is_regular_file(data, ec)) {
+      h.fail(h.line("ElementDataFile"),
+             fmt::format("its data file '{}' does not exist or is not a regular file", excerpt(data.string(), 200)),
+             "copy the data file next to the header, or write 'ElementDataFile = LOCAL' when the data follows the "
+             "header in this file");
+    }
+  }
+  const bool compressed = is_true(h.value("CompressedData"));
+  const bool binary = !h.has("BinaryData") || is_true(h.value("BinaryData"));
+  if (compressed || !binary) return;  // MetaIO reads compressed and ASCII data by their own lengths
+  const int bytes = element_bytes(h.value("ElementType"));
+  std::uint64_t need = declared_bytes(h.value("DimSize"), bytes);
+  const std::string& channels = h.value("ElementNumberOfChannels");
+  if (!channels.empty()) need *= static_cast<std::uint64_t>(std::atoll(channels.c_str()));
+  DeclaredData d{path, "MetaImage",
+                 fmt::format("'DimSize = {}' of 'ElementType = {}'{}", h.value("DimSize"), h.value("ElementType"),
+                             channels.empty() ? "" : fmt::format(" x {} channels", channels)),
+                 need, data, header_bytes, false, "'DimSize' and 'ElementType'"};
+  if (data_file != "LOCAL") {
+    const std::int64_t skip = h.has("HeaderSize") ? std::atoll(h.value("HeaderSize").c_str()) : 0;
     d.offset = skip > 0 ? static_cast<std::uint64_t>(skip) : 0;
     d.at_end = skip == -1;
   }

@@ -1,9 +1,24 @@
-// The MetaImage (.mha, .mhd) header fields grainlab reads itself, to check
-// that uncompressed binary data holds exactly the voxels the header
-// describes (declared_data.h): DimSize, ElementType,
-// ElementNumberOfChannels, CompressedData, BinaryData, HeaderSize and
-// ElementDataFile ("LOCAL": the data follows the header; a file name: a
-// detached data file, after HeaderSize bytes, -1 meaning at its end).
+// grainlab's own strict reading of a MetaImage (.mha, .mhd) header, before
+// ITK's MetaIO sees the file. MetaIO trusts its input: a header of misspelt,
+// repeated fields made it read past a buffer (a crash, exit 139). So every
+// header line must be one `Key = Value` field, each key at most once, a key
+// one or two letters off a MetaImage field ("NGims") is taken for a typo, and
+// the fields grainlab's reading depends on must be there and agree:
+//   NDims      1 to 10 (MetaIO's limit)
+//   DimSize    NDims whole numbers > 0; ElementSpacing, ElementSize NDims
+//              numbers > 0; Offset, Origin, Position, CenterOfRotation NDims
+//              numbers; TransformMatrix, Rotation, Orientation NDims^2 numbers
+//   ElementType a MET_ type; ElementNumberOfChannels 1 to 64
+//   BinaryData, CompressedData, ...ByteOrderMSB  True or False
+//   CompressedDataSize, HeaderSize  whole numbers (HeaderSize -1: the data
+//              is the end of its file)
+//   ElementDataFile  the last field (the data follows it): LOCAL (the data is
+//              in this file), a data file next to the header that exists, or
+//              a LIST or %-pattern of slice files (left to MetaIO)
+// Values are printable text of at most 1024 characters. Then uncompressed
+// binary data must hold exactly DimSize x channels x ElementType's bytes
+// (declared_data.h). Fields of other names (ITK writes an image's own
+// metadata as extra fields) are allowed when printable.
 // Format: itk.org/Wiki/ITK/MetaIO/Documentation.
 #pragma once
 
@@ -11,9 +26,9 @@
 
 namespace grainlab::ct {
 
-// Throws InputError naming the file, both lengths and the fields to fix when
-// the data is shorter or longer than DimSize x channels x ElementType's bytes.
-// Compressed, ASCII and multi-file data are left to ITK's reader.
-void check_metaimage_data_size(const std::filesystem::path& path);
+// Throws InputError naming the file, the line and the field, and how to fix
+// it, at the first field that breaks the rules above; then as
+// check_declared_data when the data is shorter or longer than the header says.
+void check_metaimage_header(const std::filesystem::path& path);
 
 }  // namespace grainlab::ct

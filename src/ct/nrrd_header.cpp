@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <vector>
 
@@ -17,6 +19,7 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr std::size_t kMaxHeaderLine = 64 * 1024;  // a header line: a field and a few numbers or a file name
+constexpr std::size_t kMaxFieldLine = 900;         // a field's line ("name: value"): what teem's messages take
 
 // deflate (gzip) turns one byte into at most 1032 (its longest match, 258
 // bytes, costs at least 2 bits): a bound on what compressed data can hold.
@@ -76,6 +79,48 @@ std::string field(const NrrdHeader& h, const std::string& name) {
   return it == h.fields.end() ? "" : it->second;
 }
 
+// A vector field ("space directions", "space origin", "measurement frame")
+// is "(x,y,z)" vectors of numbers, or "none" for an axis. A malformed vector
+// made teem overflow a buffer on its stack (found by fuzzing: a number of
+// hundreds of characters), so each is checked: at most 16 vectors of 16
+// numbers, each number whole to strtod, finite and at most 40 characters.
+void check_vector_field(const fs::path& path, int line_number, const std::string& name, const std::string& value) {
+  const auto refuse = [&](const std::string& what) {
+    input_error("'{}': NRRD header line {} ('{}: {}'): {}; write vectors as (x,y,z) with plain numbers, e.g. "
+                "(0.025,0,0), or none for a non-spatial axis; the file is damaged, write it again",
+                path.string(), line_number, name, excerpt(value, 60), what);
+  };
+  std::size_t i = 0, vectors = 0;
+  while (i < value.size()) {
+    if (value[i] == ' ' || value[i] == '\t') {
+      ++i;
+      continue;
+    }
+    if (++vectors > 16) refuse("more than 16 vectors");
+    if (value.compare(i, 4, "none") == 0) {
+      i += 4;
+      continue;
+    }
+    if (value[i] != '(') refuse(fmt::format("'{}' where a vector '(' or 'none' starts", excerpt(value.substr(i), 20)));
+    const auto close = value.find(')', i);
+    if (close == std::string::npos) refuse("a vector without its ')'");
+    const std::string inside = value.substr(i + 1, close - i - 1);
+    std::size_t start = 0, numbers = 0;
+    while (true) {
+      const auto comma = inside.find(',', start);
+      const std::string number = trim(inside.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+      char* end = nullptr;
+      const double v = std::strtod(number.c_str(), &end);
+      if (number.empty() || number.size() > 40 || *end != '\0' || !std::isfinite(v))
+        refuse(fmt::format("'{}' is not a number", excerpt(number, 40)));
+      if (++numbers > 16) refuse("a vector of more than 16 numbers");
+      if (comma == std::string::npos) break;
+      start = comma + 1;
+    }
+    i = close + 1;
+  }
+}
+
 }  // namespace
 
 double metres_per_unit(const std::string& unit) {
@@ -107,19 +152,30 @@ NrrdHeader read_nrrd_header(const fs::path& path) {
        ++line_number) {
     h.header_bytes += line.size() + 1;
     if (trim(line).empty()) break;  // the blank line before attached data
-    if (line[0] == '#' || line.find(":=") != std::string::npos) continue;  // comments, key/value pairs
     const auto colon = line.find(": ");
+    // Comments, and key/value pairs ("key:=value"; teem takes a line that
+    // starts "name: " for a field even when ":=" follows).
+    if (line[0] == '#' || line.find(":=") < colon) continue;
     // Every other line is a field, "name: value". A line of neither made
     // ITK's NRRD reader (teem) overflow a buffer and abort (found by fuzzing).
     if (colon == std::string::npos)
       input_error("'{}': NRRD header line {} ('{}') is neither a field ('name: value'), a comment ('#') nor a "
                   "key/value pair ('key:=value'); the file is damaged, write it again",
                   path.string(), line_number, excerpt(line, 60));
+    // teem quotes a field it cannot parse whole in a message buffer of fixed
+    // size on its stack: a 4 kB line overflowed it (found by fuzzing), lines
+    // of 900 characters of every field it cannot parse do not.
+    if (line.size() > kMaxFieldLine)
+      input_error("'{}': NRRD header line {} ('{}') has {} characters, more than the {} a field of an NRRD header "
+                  "takes (ITK's NRRD reader overflows on longer ones); the file is damaged, write it again",
+                  path.string(), line_number, excerpt(line, 60), line.size(), kMaxFieldLine);
     std::string name;
     for (char c : lower(line.substr(0, colon))) {
       if (c != ' ') name += c;
     }
     h.fields[name] = trim(line.substr(colon + 2));
+    if (name == "spacedirections" || name == "spaceorigin" || name == "measurementframe")
+      check_vector_field(path, line_number, line.substr(0, colon), h.fields[name]);
   }
   return h;
 }

@@ -143,11 +143,22 @@ void validate_ply(const std::filesystem::path& path, std::uintmax_t size) {
       words >> current.name >> current.count;
       if (!words) input_error("mesh '{}': PLY header line '{}' is not 'element NAME COUNT'; re-export the mesh", name,
                               excerpt(line, 80));
-    } else if (word == "property" && open_element) {
-      std::string type, count_type;
+    } else if (word == "property") {
+      // A property of an unknown type, or none, made assimp's binary reader
+      // read out of bounds (found by fuzzing): each is 'property TYPE NAME' or
+      // 'property list COUNT_TYPE ITEM_TYPE NAME' of PLY's scalar types.
+      std::string type, count_type, item_type, property;
       words >> type;
-      if (type == "list") words >> count_type;
-      current.min_bytes += ascii ? 2 : std::max<std::uintmax_t>(1, ply_type_size(type == "list" ? count_type : type));
+      if (type == "list") words >> count_type >> item_type;
+      words >> property;
+      const bool known = type == "list" ? ply_type_size(count_type) > 0 && ply_type_size(item_type) > 0
+                                        : ply_type_size(type) > 0;
+      if (!open_element || !words || !known)
+        input_error("mesh '{}': PLY header line '{}' is not 'property TYPE NAME' or 'property list COUNT_TYPE "
+                    "ITEM_TYPE NAME' (types: char uchar short ushort int uint float double, or int8 ... float64) "
+                    "after an 'element' line; the file is damaged, re-export the mesh",
+                    name, excerpt(line, 80));
+      current.min_bytes += ascii ? 2 : ply_type_size(type == "list" ? count_type : type);
     } else if (word == "end_header") {
       if (open_element) add(current);
       const std::uintmax_t body = size - std::min(size, header);
@@ -163,7 +174,12 @@ void validate_ply(const std::filesystem::path& path, std::uintmax_t size) {
       return;
     }
   }
-  // No end_header within 64 KiB: assimp reports the malformed header.
+  if (first_line) return;  // an empty file: read_mesh says so
+  // A header that never ends made assimp's reader take the data for header
+  // lines and read out of bounds (found by fuzzing).
+  input_error("mesh '{}': its PLY header has no 'end_header' line {}; the file is truncated or damaged, re-export "
+              "the mesh",
+              name, header >= 65536 ? "in its first 64 KiB" : "before the file's end");
 }
 
 // A user's path: a missing folder or a device is bad input (InputError), the rest a write failure.

@@ -66,10 +66,16 @@ ScannedGrains read_scanned_grains(const std::filesystem::path& dir, bool keep_bo
       ++out.border_dropped;
       continue;
     }
-    const std::filesystem::path mesh_file = dir / cells[file_col];
-    if (!std::filesystem::exists(mesh_file))
-      input_error("{}:{}: the mesh {} does not exist; the folder is incomplete: segment the scan again",
-                  csv.string(), line_no, mesh_file.string());
+    const std::string& name = cells[file_col];
+    if (std::any_of(name.begin(), name.end(), [](char c) { return static_cast<unsigned char>(c) < ' '; }))
+      input_error("{}:{}: file = '{}' holds a control character, so it names no mesh; the file is damaged: "
+                  "segment the scan again",
+                  csv.string(), line_no, excerpt(name));
+    const std::filesystem::path mesh_file = dir / name;
+    std::error_code ec;  // a name too long for the system is "no such mesh", not an exception
+    if (!std::filesystem::exists(mesh_file, ec))
+      input_error("{}:{}: the mesh {} does not exist{}; the folder is incomplete: segment the scan again",
+                  csv.string(), line_no, excerpt(mesh_file.string(), 300), ec ? " (" + ec.message() + ")" : "");
     out.meshes.push_back(load_mesh(mesh_file));
     out.names.push_back(mesh_file.stem().string());
   }

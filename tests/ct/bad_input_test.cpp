@@ -176,11 +176,12 @@ TEST_F(CtBadInput, SliceFolderOfMixedPixelTypes) {
 
 // A TIFF header alone: one uint16 strip of w x h pixels, no pixel data (the
 // headers are all that is read before the memory check).
+// A TIFF of w x h 16-bit pixels whose pixels are a hole (a sparse file: no disk space taken).
 void write_tiff_header(const fs::path& path, std::uint32_t w, std::uint32_t h) {
   std::string bytes = std::string("II*\0", 4) + std::string("\x08\0\0\0", 4);
   auto put16 = [&](std::uint16_t v) { bytes.append(reinterpret_cast<const char*>(&v), 2); };
   auto put32 = [&](std::uint32_t v) { bytes.append(reinterpret_cast<const char*>(&v), 4); };
-  const std::uint32_t tags[][2] = {{256, w}, {257, h}, {258, 16}, {259, 1}, {262, 1}, {273, 8},
+  const std::uint32_t tags[][2] = {{256, w}, {257, h}, {258, 16}, {259, 1}, {262, 1}, {273, 134},
                                    {277, 1}, {278, h}, {279, w * h * 2}, {284, 1}};
   put16(10);
   for (const auto& t : tags) {
@@ -190,7 +191,8 @@ void write_tiff_header(const fs::path& path, std::uint32_t w, std::uint32_t h) {
     put32(t[1]);
   }
   put32(0);
-  std::ofstream(path, std::ios::binary) << bytes;
+  std::ofstream(path, std::ios::binary) << bytes;  // 134 bytes: the pixels start there
+  fs::resize_file(path, bytes.size() + std::uint64_t{w} * h * 2);
 }
 
 TEST_F(CtBadInput, SliceFolderTooLargeForMemory) {

@@ -95,5 +95,26 @@ TEST_F(CtHeaderBounds, AnNrrdHeaderLineOfNoFieldIsRefused) {
       << msg;
 }
 
+// A 'space directions' vector of a malformed number thousands of characters
+// long made teem overflow its message buffer on its stack (found by fuzzing:
+// tests/fuzz/corpus/nrrd/crash_space_directions_b75dbb86).
+TEST_F(CtHeaderBounds, AMalformedSpaceVectorIsRefusedBeforeTeemParsesIt) {
+  const std::string head = "NRRD0004\ntype: unsigned char\ndimension: 3\nspace: left-posterior-superior\nsizes: 2 2 2\n";
+  const std::string data = "encoding: raw\n\n" + std::string(8, '\x01');
+  const fs::path bad = write("bad.nrrd", head + "space directions: (0.025,0,0) (0,0.025*5:62,0) (0,0,0.025)\n" + data);
+  EXPECT_NE(refusal(bad).find("'0.025*5:62' is not a number"), std::string::npos) << refusal(bad);
+  const fs::path open = write("open.nrrd", head + "space directions: (0.025,0,0) (0,0.025,0 (0,0,0.025)\n" + data);
+  EXPECT_NE(refusal(open).find("'0 (0' is not a number"), std::string::npos) << refusal(open);
+  const fs::path hidden = write("hidden.nrrd", head + "space directions: (0.025,0,0) (0,0.0 :=2,0) (0,0,0.025)\n" + data);
+  EXPECT_NE(refusal(hidden).find("'0.0 :=2' is not a number"), std::string::npos)
+      << "':=' after 'name: ' is a field, as teem reads it: " << refusal(hidden);
+  const fs::path long_field = write("long.nrrd", head + "content: " + std::string(1000, 'c') + "\n" + data);
+  EXPECT_NE(refusal(long_field).find("has 1009 characters, more than the 900 a field"), std::string::npos)
+      << refusal(long_field);
+  const fs::path good = write("good.nrrd", head + "space directions: (0.025,0,0) (0,0.025,0) (0,0,0.025)\nspace "
+                                                  "units: \"mm\" \"mm\" \"mm\"\n" + data);
+  EXPECT_EQ(refusal(good), "");
+}
+
 }  // namespace
 }  // namespace grainlab::ct

@@ -202,6 +202,23 @@ TEST(MeshIo, PlyHeaderClaimingMoreThanTheFileHoldsIsRefused) {
   EXPECT_EQ(read_mesh(dir / "tet.ply").faces.size(), 4u);
 }
 
+// A PLY header with no end_header, or a property of an unknown type, made
+// assimp's binary reader read out of bounds (found by fuzzing:
+// tests/fuzz/corpus/ply/crash_header_without_end_259f6ba0).
+TEST(MeshIo, PlyHeaderWithoutItsEndOrWithAnUnknownPropertyTypeIsRefused) {
+  test::TempDir dir;
+  const std::string head = "ply\nformat binary_little_endian 1.0\nelement vertex 4\nproperty float x\n";
+  write_text(dir / "no_end.ply", head + "property float y\nproperty float z\n");
+  std::string msg = test::input_error_of([&] { read_mesh(dir / "no_end.ply"); });
+  EXPECT_CONTAINS(msg, "its PLY header has no 'end_header' line before the file's end");
+  write_text(dir / "odd_type.ply", head + "property flaot y\nproperty float z\nend_header\n" + std::string(48, '\0'));
+  msg = test::input_error_of([&] { read_mesh(dir / "odd_type.ply"); });
+  EXPECT_CONTAINS(msg, "PLY header line 'property flaot y' is not 'property TYPE NAME'");
+  write_text(dir / "list.ply", head + "element face 1\nproperty list uch\nend_header\n" + std::string(48, '\0'));
+  msg = test::input_error_of([&] { read_mesh(dir / "list.ply"); });
+  EXPECT_CONTAINS(msg, "PLY header line 'property list uch' is not");
+}
+
 // A PLY face naming a vertex past the mesh's (assimp's reader does not
 // check) crashed the process in assimp's triangulation (found by fuzzing:
 // tests/fuzz/corpus/ply/crash_face_index_past_vertices.ply).

@@ -41,6 +41,20 @@ TEST(OversizedInput, AScanFoldersGrainTableThatIsADeviceIsRefused) {
   EXPECT_NE(msg.find("is a character device, not a regular file"), std::string::npos) << msg;
 }
 
+TEST(OversizedInput, AScanFoldersMeshNameTooLongOrWithAControlCharacterIsRefused) {
+  // std::filesystem::exists threw on a name over the system's 255 bytes (an exception escaping as an internal error).
+  test::IoTempDir dir;
+  const std::string head = "id,file,x_m,y_m,z_m,qw,qx,qy,qz,volume_m3,equivalent_diameter_m,border\n1,";
+  const std::string tail = ",0,0,0,1,0,0,0,1e-12,1e-4,0\n";
+  std::ofstream(dir.path / "grains.csv") << head << std::string(300, 'g') << ".stl" << tail;
+  std::string msg = test::error_of<InputError>([&] { read_scanned_grains(dir.path, false); });
+  EXPECT_NE(msg.find("grains.csv:2: the mesh"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("does not exist (File name too long)"), std::string::npos) << msg;
+  std::ofstream(dir.path / "grains.csv") << head << "grain\x01.stl" << tail;
+  msg = test::error_of<InputError>([&] { read_scanned_grains(dir.path, false); });
+  EXPECT_NE(msg.find("grains.csv:2: file = 'grain\x01.stl' holds a control character"), std::string::npos) << msg;
+}
+
 TEST(OversizedInput, AConfigOverItsLimitIsRefusedWithTheFigure) {
   test::IoTempDir dir;
   const auto file = dir.path / "big.toml";

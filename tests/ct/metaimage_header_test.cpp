@@ -1,0 +1,82 @@
+// grainlab's own strict reading of a MetaImage header (ct/metaimage_header.h),
+// before ITK's MetaIO: a header as ITK writes it passes; each field that
+// breaks the rules (repeated, misspelt, not a field, a control character,
+// numbers that disagree with NDims, a missing or absent data file) is refused
+// naming its line.
+#include "ct_fixture.h"
+
+#include "core/error.h"
+#include "ct/metaimage_header.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <string>
+
+namespace grainlab::ct {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kFields =
+    "ObjectType = Image\nNDims = 3\nBinaryData = True\nBinaryDataByteOrderMSB = False\nCompressedData = False\n"
+    "TransformMatrix = 1 0 0 0 1 0 0 0 1\nOffset = 0 0 0\nCenterOfRotation = 0 0 0\nAnatomicalOrientation = RAI\n"
+    "ElementSpacing = 0.025 0.025 0.025\nDimSize = 4 3 2\nElementType = MET_UCHAR\n";
+
+class MetaImageHeader : public ::testing::Test {
+ protected:
+  void SetUp() override { dir_ = testing::fresh_folder(::testing::UnitTest::GetInstance()->current_test_info()->name()); }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  // The InputError's message checking `fields`, `data_file` and `data` (24 voxels) throws ("" if none).
+  std::string refusal(const std::string& fields, const std::string& data_file = "ElementDataFile = LOCAL\n",
+                      const std::string& data = std::string(24, '\x07')) {
+    const fs::path p = dir_ / "scan.mha";
+    std::ofstream(p, std::ios::binary | std::ios::trunc) << fields << data_file << data;
+    try {
+      check_metaimage_header(p);
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "";
+  }
+
+  fs::path dir_;
+};
+
+std::string replaced(std::string s, const std::string& from, const std::string& to) {
+  return s.replace(s.find(from), from.size(), to);
+}
+
+TEST_F(MetaImageHeader, AHeaderAsItkWritesItPasses) {
+  EXPECT_EQ(refusal(kFields), "");
+  EXPECT_EQ(refusal(kFields + "ITK_InputFilterName = MetaImageIO\n"), "") << "a field of another name";
+}
+
+TEST_F(MetaImageHeader, EachBrokenFieldIsRefusedNamingItsLine) {
+  EXPECT_NE(refusal("NDims = 3\n" + kFields).find("line 3): field 'NDims' given a second time (first on line 1)"),
+            std::string::npos);
+  EXPECT_NE(refusal(replaced(kFields, "NDims", "NGims")).find("line 2): 'NGims' is not a MetaImage field (a misspelt "
+                                                              "'NDims'?)"),
+            std::string::npos);
+  EXPECT_NE(refusal("a line of no field\n" + kFields).find("line 1): 'a line of no field' is not a 'Key = Value'"),
+            std::string::npos);
+  EXPECT_NE(refusal(replaced(kFields, "RAI", "R\x01I")).find("holds the control character 0x01"), std::string::npos);
+  EXPECT_NE(refusal(replaced(kFields, "DimSize = 4 3 2", "DimSize = 4 3")).find("holds 2 numbers, but NDims = 3"),
+            std::string::npos);
+  EXPECT_NE(refusal(replaced(kFields, "0.025 0.025 0.025", "0.025 -1 0.025")).find("'-1' is not a number > 0"),
+            std::string::npos);
+  EXPECT_NE(refusal(replaced(kFields, "MET_UCHAR", "MET_UCHAT")).find("is not a MetaImage element type"),
+            std::string::npos);
+  EXPECT_NE(refusal(replaced(kFields, "CompressedData = False", "CompressedData = Maybe")).find("neither True nor"),
+            std::string::npos);
+  EXPECT_NE(refusal(kFields, "", "").find("no 'ElementDataFile' field"), std::string::npos);
+  EXPECT_NE(refusal(kFields, "ElementDataFile = LOCALo\n").find("its data file '"), std::string::npos);
+  EXPECT_NE(refusal(replaced(kFields, "DimSize = 4 3 2", "DimSize = 4 3 4")).find("is truncated or its header is "
+                                                                                  "wrong"),
+            std::string::npos)
+      << "the data's length is still checked";
+}
+
+}  // namespace
+}  // namespace grainlab::ct
