@@ -82,6 +82,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace grainlab {
 
@@ -162,9 +163,10 @@ class SoftDepth {
   using Lanes = double __attribute__((vector_size(32)));
   static constexpr int kLanes = 4, kBuffer = 64;
   static Lanes lanes(double x) { return Lanes{x, x, x, x}; }
-  static Lanes at(const double* p) {
-    using Unaligned = double __attribute__((vector_size(32), aligned(8), may_alias));
-    return *reinterpret_cast<const Unaligned*>(p);
+  static Lanes at(const double* p) {  // an unaligned load (memcpy: no alignment or aliasing assumed)
+    Lanes v;
+    std::memcpy(&v, p, sizeof v);
+    return v;
   }
   static double sum(Lanes v) { return (v[0] + v[1]) + (v[2] + v[3]); }
 
