@@ -10,7 +10,11 @@ beads_direct_shear.in with grainlab's bead count, shear speed and step counts
 (deposition DEP_STEPS, then consolidation up to grainlab's first shear step,
 then grainlab's shear steps). Times are read off the programs' output lines
 as they arrive: the shear phase is from grainlab's "phase shear" line to its
-"phase done" line, and from the deck's SHEAR START to SHEAR END.
+"phase done" line, and from the deck's SHEAR START to SHEAR END. Beside the
+wall-clock figures, the same spans in CPU seconds of the process (user +
+system, read from /proc as the lines arrive; the whole test's from the
+child's rusage): on a shared machine, where a process gets a varying share
+of a core, those compare the codes; on a quiet one the two agree.
 
 Peaks as grainlab takes them (analysis/peak.h, analysis/dilation.h): a sample
 every 0.001 strain, phi = atan(F/N) with F the x force on the upper half and
@@ -21,6 +25,7 @@ import argparse
 import json
 import math
 import os
+import resource
 import shutil
 import statistics
 import subprocess
@@ -34,27 +39,43 @@ DEP_STEPS = 20000  # LIGGGHTS' deposition at 100 g: at rest (KE ~ 1e-6 J) by the
 GAP_STEPS = 200    # the deck opens the gap over these steps
 
 
+TICK = os.sysconf("SC_CLK_TCK")
+
+
+def cpu_seconds(pid):
+    """User + system CPU seconds of a running process (all its threads)."""
+    try:
+        with open(f"/proc/{pid}/stat") as f:
+            fields = f.read().rsplit(")", 1)[1].split()
+        return (int(fields[11]) + int(fields[12])) / TICK
+    except (OSError, IndexError, ValueError):
+        return float("nan")
+
+
 def timed_lines(cmd, cwd, env=None):
-    """Runs cmd; returns (lines with their monotonic times, wall seconds, rc)."""
+    """Runs cmd; returns (lines as (wall time, CPU seconds, text), wall seconds, CPU seconds, rc)."""
     start = time.monotonic()
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
     p = subprocess.Popen(cmd, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
                          errors="replace", env=env)
     lines = []
     for line in p.stdout:
-        lines.append((time.monotonic(), line.rstrip("\n")))
+        lines.append((time.monotonic(), cpu_seconds(p.pid), line.rstrip("\n")))
     rc = p.wait()
-    return lines, time.monotonic() - start, rc
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+    return lines, time.monotonic() - start, cpu, rc
 
 
 def fail(what, lines):
-    tail = "\n".join(l for _, l in lines[-30:])
+    tail = "\n".join(l for _, _, l in lines[-30:])
     sys.exit(f"{what} failed; the last lines of its output:\n{tail}")
 
 
 def at(lines, prefix):
-    for t, l in lines:
+    for t, c, l in lines:
         if l.strip().startswith(prefix):
-            return t, l
+            return (t, c), l
     return None, None
 
 
@@ -81,7 +102,7 @@ def run_grainlab(exe, config, strain, work, k):
     cfg = os.path.join(work, f"grainlab_{k}.toml")
     open(cfg, "w").write(text)
     env = dict(os.environ, OMP_NUM_THREADS="1")
-    lines, wall, rc = timed_lines([exe, "run", cfg, "--threads", "1"], work, env)
+    lines, wall, cpu, rc = timed_lines([exe, "run", cfg, "--threads", "1"], work, env)
     if rc != 0:
         fail("grainlab run", lines)
     t0, l0 = at(lines, "phase shear from step")
@@ -90,8 +111,8 @@ def run_grainlab(exe, config, strain, work, k):
         fail("grainlab run (no shear phase lines)", lines)
     s0, s1 = int(l0.split()[-1]), int(l1.split()[-1])
     rec = json.load(open(os.path.join(folder, "run.json")))
-    return {"wall": wall, "shear_s": t1 - t0, "shear_steps": s1 - s0, "first_shear_step": s0,
-            "after_shear_s": lines[-1][0] - t1, "beads": rec["grains"], "speed": rec["shear_speed_m_per_s"],
+    return {"wall": wall, "cpu": cpu, "shear_s": t1[0] - t0[0], "shear_cpu": t1[1] - t0[1],
+            "shear_steps": s1 - s0, "first_shear_step": s0, "after_shear_s": lines[-1][0] - t1[0], "beads": rec["grains"], "speed": rec["shear_speed_m_per_s"],
             "dt": rec["time_step_s"], "e": rec["preparation"]["void_ratio"],
             "deposition_friction": rec["preparation"]["deposition_friction"],
             "phi": rec["peaks"]["friction_angle_deg"], "phi_is_peak": rec["peaks"]["friction_is_peak"],
@@ -108,19 +129,22 @@ def run_liggghts(exe, g, strain, length, work, k):
     con = g["first_shear_step"] - DEP_STEPS - GAP_STEPS
     var = {"mesh": "mesh", "n": g["beads"], "dep": DEP_STEPS, "con": con, "shear": g["shear_steps"],
            "vshear": repr(g["speed"]), "top": top, "fdep": repr(g["deposition_friction"]), "every": every}
-    cmd = [exe, "-in", os.path.join(HERE, "beads_direct_shear.in"), "-log", "log.lammps", "-echo", "none"]
+    # Line-buffered, so that each line is read when it is written (LIGGGHTS
+    # buffers a pipe in blocks: SHEAR START would arrive late).
+    cmd = (["stdbuf", "-oL"] if shutil.which("stdbuf") else []) + [
+        exe, "-in", os.path.join(HERE, "beads_direct_shear.in"), "-log", "log.lammps", "-echo", "none"]
     for key, v in var.items():
         cmd += ["-var", key, str(v)]
     env = dict(os.environ, OMP_NUM_THREADS="1")
-    lines, wall, rc = timed_lines(cmd, folder, env)
-    if rc != 0 or any("ERROR" in l for _, l in lines):
+    lines, wall, cpu, rc = timed_lines(cmd, folder, env)
+    if rc != 0 or any("ERROR" in l for _, _, l in lines):
         fail("liggghts", lines)
     t0, _ = at(lines, "SHEAR START")
     t1, _ = at(lines, "SHEAR END")
     # The shear's thermo rows: step dh capz N F e cpu (the first is the setup's, with doubled forces).
     rows = []
     inside = False
-    for _, l in lines:
+    for _, _, l in lines:
         if l.startswith("SHEAR START"):
             inside = True
         elif l.startswith("SHEAR END"):
@@ -130,6 +154,9 @@ def run_liggghts(exe, g, strain, length, work, k):
             if len(f) == 7 and f[0].isdigit():
                 rows.append([float(x) for x in f])
     rows = rows[1:]
+    # LIGGGHTS' own wall time of the shear run, to check the lines' times by.
+    loop = [l for _, _, l in lines if l.startswith("Loop time of")]
+    loop_s = float(loop[-1].split()[3]) if loop else float("nan")
     dh = [r[1] for r in rows]
     dv = [r[2] - rows[0][2] for r in rows]
     strains = [d / length for d in dh]
@@ -137,7 +164,8 @@ def run_liggghts(exe, g, strain, length, work, k):
     psi = dilation(dh, dv)
     phi_p, phi_ok = peak(phi, strains, strain)
     psi_p, psi_ok = peak(psi, strains, strain)
-    return {"wall": wall, "shear_s": t1 - t0, "shear_steps": g["shear_steps"], "beads": g["beads"],
+    return {"wall": wall, "cpu": cpu, "shear_s": t1[0] - t0[0], "shear_cpu": t1[1] - t0[1],
+            "shear_steps": g["shear_steps"], "beads": g["beads"], "loop_s": loop_s,
             "e": rows[0][5], "phi": phi_p, "phi_is_peak": phi_ok, "psi": psi_p, "psi_is_peak": psi_ok}
 
 
@@ -164,12 +192,13 @@ def main():
     for k in range(a.repeats):
         g = run_grainlab(a.grainlab, config, a.strain, work, k)
         g_runs.append(g)
-        print(f"grainlab  run {k + 1}: shear {g['shear_steps'] / g['shear_s']:.0f} steps/s, whole {g['wall']:.1f} s",
-              flush=True)
+        print(f"grainlab  run {k + 1}: shear {g['shear_steps'] / g['shear_s']:.0f} steps/s "
+              f"({g['shear_steps'] / g['shear_cpu']:.0f} per CPU second), whole {g['wall']:.1f} s", flush=True)
         lg = run_liggghts(a.liggghts, g_runs[0], a.strain, length, work, k)
         l_runs.append(lg)
-        print(f"LIGGGHTS  run {k + 1}: shear {lg['shear_steps'] / lg['shear_s']:.0f} steps/s, whole {lg['wall']:.1f} s",
-              flush=True)
+        print(f"LIGGGHTS  run {k + 1}: shear {lg['shear_steps'] / lg['shear_s']:.0f} steps/s "
+              f"({lg['shear_steps'] / lg['shear_cpu']:.0f} per CPU second; its own loop time "
+              f"{lg['shear_steps'] / lg['loop_s']:.0f} steps/s), whole {lg['wall']:.1f} s", flush=True)
     if not a.keep:
         shutil.rmtree(work, ignore_errors=True)
 
@@ -181,13 +210,16 @@ def main():
     print(f"{'':30} {'grainlab':>12} {'LIGGGHTS':>12} {'ratio':>7}")
     rows = [("shear steps/s", lambda r: r["shear_steps"] / r["shear_s"], "{:.0f}"),
             ("shear particle-steps/s", lambda r: r["beads"] * r["shear_steps"] / r["shear_s"], "{:.3g}"),
-            ("whole test wall s", lambda r: r["wall"], "{:.1f}")]
+            ("whole test wall s", lambda r: r["wall"], "{:.1f}"),
+            ("shear steps per CPU s", lambda r: r["shear_steps"] / r["shear_cpu"], "{:.0f}"),
+            ("whole test CPU s", lambda r: r["cpu"], "{:.1f}")]
     for name, f, fmt in rows:
         gv, lv = med(g_runs, f), med(l_runs, f)
-        ratio = gv / lv if "wall" not in name else lv / gv
+        ratio = lv / gv if name.startswith("whole") else gv / lv
         print(f"{name:30} {fmt.format(gv):>12} {fmt.format(lv):>12} {ratio:>6.2f}x")
-    print(f"{'  of which after the shear s':30} {med(g_runs, lambda r: r['after_shear_s']):>12.1f}"
-          "   (grainlab: analysis, outputs, report)")
+        if name == "whole test wall s":
+            print(f"{'  of which after the shear s':30} {med(g_runs, lambda r: r['after_shear_s']):>12.1f}"
+                  "   (grainlab: analysis, outputs, report)")
     print("(ratio: how many times faster grainlab is)")
     print("\nresults (first run of each):")
     for name, key in (("void ratio at the shear's start", "e"), ("peak friction angle phi_p deg", "phi"),
