@@ -6,6 +6,6 @@
 # what differs between the two set-ups: bench/liggghts/.
 #
 #   bench/sphere_vs_liggghts.sh [--quick] [--repeats N] [--strain S] [--keep DIR]
-#     --quick: one run each to 2 % strain (about 4 minutes on a quiet machine)
-#     default: three runs each to 10 % strain (about 15 minutes)
+#     --quick: one run each to 2 % strain (about 2 minutes on a quiet machine)
+#     default: three runs each to 10 % strain (about 6 minutes)
 exec /usr/bin/python3 "$(dirname "$0")/liggghts/compare.py" "$@"

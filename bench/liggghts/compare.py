@@ -171,7 +171,7 @@ def run_liggghts(exe, g, strain, length, work, k):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--quick", action="store_true", help="one repeat to 2 %% strain (about 4 minutes)")
+    ap.add_argument("--quick", action="store_true", help="one repeat to 2 %% strain (about 2 minutes quiet)")
     ap.add_argument("--repeats", type=int, default=3, help="runs of each code, alternated (default 3)")
     ap.add_argument("--strain", type=float, default=0.10, help="final shear strain (default 0.10)")
     ap.add_argument("--grainlab", default=os.path.join(ROOT, "build", "grainlab"), help="grainlab binary")
