@@ -93,7 +93,7 @@ PreparedRun prepare_run(const LabSpec& spec, const fs::path& out, bool resume,
     if (const auto known = embedded_index_densities(spec)) {
       r.specimen.own_e_min = known->e_min;
       r.specimen.own_e_max = known->e_max;
-      fmt::print("own index void ratios of the default grains, {}: e_min {:.4f}, e_max {:.4f}\n", known->how,
+      fmt::print("own index void ratios of these grains, built in ({}): e_min {:.4f}, e_max {:.4f}\n", known->how,
                  r.specimen.own_e_min, r.specimen.own_e_max);
       run.record["index_densities_source"] = known->how;
     } else if (const auto cached = cached_index_densities(cache, spec)) {

@@ -23,15 +23,29 @@ const EmbeddedIndices& default_grain_indices() {
   return record;
 }
 
+const EmbeddedIndices& bench_bead_indices() {
+  // Measured 2026-12-06 by `grainlab run bench/liggghts/beads_direct_shear.toml`
+  // (glass beads 0.707-0.841 mm, E 4 GPa, nu 0.25, restitution 0.5, friction
+  // 0.12, frictionless walls, dt 4.674e-7 s, density scaling 1, 100 kPa, seed 1;
+  // one thread, the machine shared; index box 10 x 8 d_max, 1,146 beads).
+  // e_min: frictionless deposition and compaction, 43,600 steps, 28 s; e_max:
+  // deposition at friction 1.0, 22,100 steps, 13 s.
+  static const EmbeddedIndices record{
+      0x12b44526d626e143ull, 0x1a91e7d3u, 0.5803851395791362, 0.7436361557686755, 0.6862646507990815, 1.0636276395489754,
+      "measured 2026-12-06 with `grainlab run bench/liggghts/beads_direct_shear.toml` (seed 1)"};
+  return record;
+}
+
 std::uint64_t index_key_hash(const LabSpec& spec) {
   const std::string key = index_cache_key(spec);
   return fnv1a64(std::span(reinterpret_cast<const std::uint8_t*>(key.data()), key.size()));
 }
 
 std::optional<EmbeddedIndices> embedded_index_densities(const LabSpec& spec) {
-  const EmbeddedIndices& r = default_grain_indices();
-  if (index_key_hash(spec) != r.key_hash) return std::nullopt;
-  return r;
+  const std::uint64_t key = index_key_hash(spec);
+  for (const EmbeddedIndices* r : {&default_grain_indices(), &bench_bead_indices()})
+    if (key == r->key_hash) return *r;
+  return std::nullopt;
 }
 
 }  // namespace grainlab

@@ -3,6 +3,7 @@
 // grains the generator makes for it: when the default's index inputs or its
 // grains change, the first test fails and says how to measure them again.
 #include "io/checkpoint.h"
+#include "io/config.h"
 #include "io/embedded_indices.h"
 #include "lab/direct_shear.h"
 
@@ -63,4 +64,44 @@ TEST(EmbeddedIndices, AreTakenOnlyForTheDefaultsIndexInputs) {
   EXPECT_FALSE(other([](LabSpec& s) { s.material.grain.friction = 0.3; }));
   EXPECT_FALSE(other([](LabSpec& s) { s.consolidation.normal_stress = 200e3; }));
   EXPECT_FALSE(other([](LabSpec& s) { s.numerics.time_step_fraction = 0.2; }));
+}
+
+// The beads of the comparison with other sphere codes: the record belongs to
+// the bench's config (bench/liggghts/beads_direct_shear.toml, read here) and
+// to the beads grainlab places for it, and to nothing else.
+TEST(EmbeddedIndices, BelongToTheBenchBeadsAndNothingElse) {
+  const LabSpec spec = load_config(std::filesystem::path(GRAINLAB_TEST_DATA) / ".." / ".." / "bench" / "liggghts" /
+                                   "beads_direct_shear.toml");
+  const EmbeddedIndices& r = bench_bead_indices();
+  EXPECT_EQ(index_key_hash(spec), r.key_hash)
+      << "the beads' embedded indices were measured for other inputs: run `build/grainlab run "
+         "bench/liggghts/beads_direct_shear.toml --threads 1` with the record's key hash set to 0, and put the "
+         "e_min, e_max of its index_densities.json, this key hash and this fingerprint in "
+         "src/io/embedded_indices.cpp (key hash 0x"
+      << std::hex << index_key_hash(spec) << ")";
+  LabSpec known = spec;
+  known.specimen.own_e_min = r.e_min;
+  known.specimen.own_e_max = r.e_max;
+  const DirectShearTest test(known);
+  const std::uint32_t grains = grains_fingerprint(test.world().model);
+  EXPECT_EQ(grains, r.grains) << "the beads placed for the bench's config changed (fingerprint 0x" << std::hex
+                              << grains << "): measure the record again as above";
+  const auto taken = embedded_index_densities(spec);
+  ASSERT_TRUE(taken);
+  EXPECT_EQ(taken->e_min, r.e_min);
+  // Near-monosized spheres: the bulk densest near random close packing (e about 0.56), the loosest looser.
+  EXPECT_GT(r.e_min, 0.5);
+  EXPECT_LT(r.e_min, 0.65);
+  EXPECT_GT(r.e_max, r.e_min + 0.1);
+  EXPECT_LT(r.e_max, 0.9);
+  const auto other = [&](auto change) {
+    LabSpec s = spec;
+    change(s);
+    return embedded_index_densities(s).has_value();
+  };
+  EXPECT_FALSE(other([](LabSpec& s) { s.grains.d_max = 1e-3; }));
+  EXPECT_FALSE(other([](LabSpec& s) { s.material.grain.poisson_ratio = 0.3; }));
+  EXPECT_FALSE(other([](LabSpec& s) { s.numerics.time_step = 4e-7; }));
+  EXPECT_FALSE(other([](LabSpec& s) { s.seed = 2; }));
+  EXPECT_TRUE(other([](LabSpec& s) { s.box.length = 0.02; }));  // the index box is 10 d_max whatever the test's box
 }
