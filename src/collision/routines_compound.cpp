@@ -219,9 +219,13 @@ int compound_compound(const PosedShape& a, const PosedShape& b, PairCache& cache
   const auto& pb = b.geometry_as<CompoundShape>().pieces;
   const double rb = compound_bound(b);
   const Vec3 dir = pair_direction(a, b, cache);
-  // The lowest point of each piece of B along dir.
+  // The lowest point of each piece of B along dir, and the highest of each
+  // piece of A: support queries, found when a piece pair's bounding spheres
+  // first overlap (the cheaper test first; a pair is skipped when either
+  // says so, as before).
+  constexpr double kNotYet = std::numeric_limits<double>::quiet_NaN();
   double low_b[kMaxCompoundPieces];
-  for (std::size_t j = 0; j < pb.size(); ++j) low_b[j] = -support_value(pose_piece(b, pb[j]), -dir);
+  std::fill_n(low_b, pb.size(), kNotYet);
   for (std::size_t i = 0; i < pa.size(); ++i) {
     const PosedShape ai = pose_piece(a, pa[i]);
     const double rai = piece_bound(a, pa[i]);
@@ -229,15 +233,17 @@ int compound_compound(const PosedShape& a, const PosedShape& b, PairCache& cache
       for (std::size_t j = 0; j < pb.size(); ++j) skipped(pieces, i * pb.size() + j);
       continue;
     }
-    const double top_ai = support_value(ai, dir);
+    double top_ai = kNotYet;
     for (std::size_t j = 0; j < pb.size(); ++j) {
       const std::size_t k = i * pb.size() + j;
-      if (top_ai < low_b[j]) {  // a plane along dir separates them
+      const PosedShape bj = pose_piece(b, pb[j]);
+      if (apart(ai, rai, bj, piece_bound(b, pb[j]))) {
         skipped(pieces, k);
         continue;
       }
-      const PosedShape bj = pose_piece(b, pb[j]);
-      if (apart(ai, rai, bj, piece_bound(b, pb[j]))) {
+      if (std::isnan(top_ai)) top_ai = support_value(ai, dir);
+      if (std::isnan(low_b[j])) low_b[j] = -support_value(bj, -dir);
+      if (top_ai < low_b[j]) {  // a plane along dir separates them
         skipped(pieces, k);
         continue;
       }

@@ -224,13 +224,15 @@ int CollisionDriver::collide_pair(const CollisionStep& s, CandidatePair& pc, Sub
   const double reach = ma.bounding_radius + mb.bounding_radius;
   if ((s.state.bodies[pc.b].x - s.state.bodies[pc.a].x).squaredNorm() > reach * reach) {
     pc.cache.warm = false;  // the last normal will be stale when they meet
-    if (pc.pieces >= 0) {     // and so will the pieces'
+    if (pc.pieces >= 0 && !pc.pieces_cold) {  // and so will the pieces' (once made cold, they stay so)
       const PosedShape a = posed_body(s.model, s.state, pc.a), b = posed_body(s.model, s.state, pc.b);
       if (PairCache* pieces = piece_block(s.state.piece_caches, pc, a, b))
         for (int k = 0; k < piece_cache_count(a, b); ++k) pieces[k].warm = false;
+      pc.pieces_cold = true;
     }
     return 0;
   }
+  pc.pieces_cold = false;
   const PosedShape a = posed_body(s.model, s.state, pc.a), b = posed_body(s.model, s.state, pc.b);
   return collide_shapes(a, b, pc.cache, out, piece_block(s.state.piece_caches, pc, a, b));
 }

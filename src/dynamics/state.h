@@ -44,6 +44,12 @@ struct CandidatePair {
   // piece_caches (or wall_piece_caches), piece_cache_count of them
   // (collision/dispatch.h); -1: none (convex shapes, or not yet given: cold).
   std::int32_t pieces = -1;
+  // True when every piece-pair cache of the pair is known to be cold (set
+  // when the pair's bounding spheres are apart and its caches were made cold,
+  // cleared when its pieces are collided): a hint that spares making them
+  // cold again at every step the pair stays apart, so it never changes a
+  // result; not checkpointed (a restored pair makes them cold once more).
+  bool pieces_cold = false;
 
   std::uint64_t key() const {
     return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) |

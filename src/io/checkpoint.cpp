@@ -43,9 +43,9 @@ namespace grainlab {
 // A new field in these structs must be written below (and the version bumped).
 static_assert(sizeof(ContactResult) == 104, "ContactResult changed: update io/checkpoint.cpp and kCheckpointVersion");
 static_assert(sizeof(PairCache) == 64, "PairCache changed: update io/checkpoint.cpp and kCheckpointVersion");
-// CandidatePair::first_contact is a checked hint, not state: it is not written
-// and reads back as kUnknownContacts.
-static_assert(sizeof(CandidatePair) == 80, "CandidatePair changed: update io/checkpoint.cpp and kCheckpointVersion");
+// CandidatePair::first_contact and pieces_cold are hints, not state: they are
+// not written and read back as kUnknownContacts and false.
+static_assert(sizeof(CandidatePair) == 88, "CandidatePair changed: update io/checkpoint.cpp and kCheckpointVersion");
 static_assert(sizeof(Contact) == 200, "Contact changed: update io/checkpoint.cpp and kCheckpointVersion");
 
 namespace {

@@ -6,6 +6,7 @@
 
 #include "core/parallel.h"
 #include "geometry/convex_hull.h"
+#include "geometry/decomposition_cache.h"
 #include "geometry/mass_properties.h"
 #include "grains/grain_set.h"
 #include "grains/sh_sands.h"
@@ -35,7 +36,8 @@ std::vector<Index> add_mesh_shapes(Model& model, const std::vector<TriMesh>& mes
                                    const std::vector<std::string>& names, bool spheres,
                                    const std::string& representation, int threads, GrainRepresentation* report) {
   const int n = static_cast<int>(meshes.size());
-  // Decompose first (in parallel: a 2000-face grain takes about 2 s), then add in order.
+  // Decompose first (in parallel: a 2000-face grain takes about 2 s; a shape
+  // this process has decomposed before is looked up), then add in order.
   std::vector<ConvexDecomposition> pieces(n);
   std::vector<char> concave(n, 0);
   if (!spheres) {
@@ -46,7 +48,7 @@ std::vector<Index> add_mesh_shapes(Model& model, const std::vector<TriMesh>& mes
           if (!concave[k]) return;
           DecompositionOptions o;
           o.max_pieces = kMaxCompoundPieces;
-          pieces[k] = decompose_convex(meshes[k], o);
+          pieces[k] = decompose_convex_cached(meshes[k], o);
           if (pieces[k].pieces.size() == 1) concave[k] = 0;  // convex after all: the hull path
         },
         1, threads);
