@@ -154,9 +154,8 @@ double smoothstep(double t) {
 // The weight is also the result's `share`, with which the law scales its
 // damping and tangential spring: with the elastic force alone shared, n
 // results along a seam gave the contact n times one contact's damping and
-// tangential stiffness, which halved the stable step of concave grains
-// (measured: SH grains deposited at friction 1 span up in a period-two
-// oscillation, docs/grains.md).
+// tangential stiffness (a sphere moving across the U grain's seams felt up
+// to 1.52 times the hull's force, tests/dynamics/concave_contact_test.cpp).
 void weigh_seams(SubContact* out, const double* size, int n) {
   double d4[kMaxSubContacts], sum[kMaxSubContacts];
   for (int i = 0; i < n; ++i) {

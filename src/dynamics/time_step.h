@@ -35,7 +35,7 @@
 // with it, at deposition friction up to 1. Concave grains did not: a pair of
 // them touches at several places at once (one result per piece pair), so a
 // grain in a loose deposit at friction 1 feels several parallel springs and
-// dampers, and at 0.4 of the undamped bound spherical-harmonic grains span
+// dampers, and at 0.4 of the undamped bound spherical-harmonic grains spun
 // up in a period-two oscillation (angular velocity flipping every step, a
 // grain's contacts pulling on every other step) until one went non-finite
 // (measured 2026-12-07: no fault without damping, none without friction,
