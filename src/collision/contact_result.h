@@ -21,6 +21,13 @@ struct ContactResult {
   // beyond that of the force at `point` (zero for a face on a plane) (m).
   double gain = 1;
   Vec3 twist = Vec3::Zero();
+  // The share of one contact this result carries (0 to 1): a contact of two
+  // concave grains found once per piece pair along a seam is split among its
+  // results (weigh_seams, routines_compound.cpp), which also scales `gain`
+  // and `twist`. The law scales the contact's damping and tangential spring
+  // by it, so the results of one contact add up to one contact in every
+  // term, not in the elastic force alone; 1 for every convex pair.
+  double share = 1;
 };
 
 }  // namespace grainlab

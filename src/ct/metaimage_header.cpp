@@ -1,3 +1,4 @@
+#include "core/text.h"
 #include "ct/metaimage_header.h"
 
 #include "core/bounded_line.h"
@@ -36,34 +37,6 @@ constexpr std::array<std::string_view, 37> kFields{
     "Modality",        "SequenceID",         "ElementMin",      "ElementMax",
     "ElementNumberOfChannels", "ElementSize", "ElementType",    "ElementDataFile",
     "TransformType"};
-
-std::string trim(const std::string& s) {
-  const auto a = s.find_first_not_of(" \t\r");
-  return a == std::string::npos ? "" : s.substr(a, s.find_last_not_of(" \t\r") - a + 1);
-}
-
-std::string lower(std::string_view s) {
-  std::string out(s);
-  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return out;
-}
-
-// Edit distance (insertions, deletions, substitutions), without case.
-std::size_t edit_distance(std::string_view a_in, std::string_view b_in) {
-  const std::string a = lower(a_in), b = lower(b_in);
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t up = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diagonal = up;
-    }
-  }
-  return row[b.size()];
-}
 
 int element_bytes(const std::string& type) {
   static const std::map<std::string, int> bytes = {
@@ -159,7 +132,7 @@ class Header {
     if (!printable) fail(n, fmt::format("'{}' is not a field name", excerpt(key)), "fix or remove the line");
     if (std::find(kFields.begin(), kFields.end(), key) != kFields.end()) return;
     for (const std::string_view known : kFields) {
-      if (edit_distance(key, known) <= 2 && key.size() > 3) {
+      if (edit_distance(lower(key), lower(known)) <= 2 && key.size() > 3) {
         fail(n, fmt::format("'{}' is not a MetaImage field (a misspelt '{}'?)", key, known),
              "correct its spelling (MetaImage field names are case-sensitive)");
       }

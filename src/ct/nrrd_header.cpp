@@ -1,3 +1,4 @@
+#include "core/text.h"
 #include "ct/nrrd_header.h"
 
 #include "core/bounded_line.h"
@@ -24,17 +25,6 @@ constexpr std::size_t kMaxFieldLine = 900;         // a field's line ("name: val
 // deflate (gzip) turns one byte into at most 1032 (its longest match, 258
 // bytes, costs at least 2 bits): a bound on what compressed data can hold.
 constexpr std::uint64_t kDeflateMaxRatio = 1032;
-
-std::string lower(std::string s) {
-  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return s;
-}
-
-std::string trim(const std::string& s) {
-  const auto a = s.find_first_not_of(" \t\r");
-  if (a == std::string::npos) return "";
-  return s.substr(a, s.find_last_not_of(" \t\r") - a + 1);
-}
 
 // "m" "mm" "" -> {m, mm, ""}; unquoted words are taken as they are.
 std::vector<std::string> quoted_list(const std::string& value) {

@@ -41,7 +41,7 @@ void evaluate_block(std::vector<Contact>& list, std::size_t first, double dt, co
     c.nx[l] = pc.geo.normal.x(), c.ny[l] = pc.geo.normal.y(), c.nz[l] = pc.geo.normal.z();
     c.delta[l] = pc.geo.depth;
     c.vx[l] = s.v_rel.x(), c.vy[l] = s.v_rel.y(), c.vz[l] = s.v_rel.z();
-    c.m_eff[l] = s.m_eff, c.r_eff[l] = s.r_eff, c.gain[l] = pc.geo.gain;
+    c.m_eff[l] = s.m_eff, c.r_eff[l] = s.r_eff, c.gain[l] = pc.geo.gain, c.share[l] = pc.geo.share;
     c.xix[l] = pc.xi.x(), c.xiy[l] = pc.xi.y(), c.xiz[l] = pc.xi.z();
     for (int i = 0; i < Law::pair_slots; ++i) p.c[i][l] = s.pair->c[i];
     p.friction[l] = s.pair->friction;

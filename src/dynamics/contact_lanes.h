@@ -10,6 +10,7 @@
 // contacts in the lanes of one register share each wait.
 //
 // Step by step (the one-contact form's branches become selects):
+//   C_n, K_t, C_t <- share C_n, share K_t, share C_t  (ContactResult::share);
 //   f_n = max(0, gain K_n delta - C_n v_n),  v_n = v.n,  v_t = v - v_n n;
 //   xi <- (xi - (xi.n) n) sqrt(|xi|^2 / |xi - (xi.n) n|^2)   (if xi != 0; 0 if
 //         xi lies along n), then xi += v_t dt;
@@ -47,7 +48,7 @@ struct ContactLanes {
   Lanes nx, ny, nz;  // unit normal, a to b
   Lanes delta;       // overlap (m)
   Lanes vx, vy, vz;  // velocity of b's material point minus a's (m/s)
-  Lanes m_eff, r_eff, gain;
+  Lanes m_eff, r_eff, gain, share;
   Lanes xix, xiy, xiz;  // tangential spring (m), in and out
 };
 
@@ -61,7 +62,8 @@ template <typename Law>
 ForceLanes contact_force_lanes(const PairCoefficientsOf<Lanes>& p, ContactLanes& c, double dt) {
   const Lanes zero{};
   ForceLanes out;
-  const LawCoefficientsOf<Lanes> k = Law::at(p, c.delta, c.r_eff, c.m_eff);
+  LawCoefficientsOf<Lanes> k = Law::at(p, c.delta, c.r_eff, c.m_eff);
+  k.c_n *= c.share, k.k_t *= c.share, k.c_t *= c.share;  // exact for share 1
   out.k = k;
   const Lanes v_n = c.vx * c.nx + c.vy * c.ny + c.vz * c.nz;
   const Lanes vtx = c.vx - v_n * c.nx, vty = c.vy - v_n * c.ny, vtz = c.vz - v_n * c.nz;

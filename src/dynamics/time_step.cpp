@@ -22,9 +22,11 @@ TimeStepEstimate critical_time_step(const Model& model, double fraction) {
     const double r = b.bounding_radius;
     const double m_c = 1.0 / (b.inv_mass + r * r * b.inv_inertia.maxCoeff());
     const double delta = fraction * b.radius;
-    // The damping enters only where the point mass is exact (spheres, see
-    // time_step.h: faceted grains keep the undamped bound for now).
-    const bool exact_point_mass = model.shapes[b.shape].isotropic;
+    // The damping enters for spheres (where the point mass is exact) and for
+    // concave grains (whose pairs touch at several places at once); convex
+    // faceted grains keep the undamped bound (time_step.h).
+    const Shape& shape = model.shapes[b.shape];
+    const bool damped = shape.isotropic || shape.kind == ShapeKind::Compound;
     for (std::size_t other = 0; other < model.materials.size(); ++other) {
       const PairCoefficients& p = model.pair(b.material, static_cast<Index>(other));
       // Grain-grain with an equal grain (R* = R/2, m* = m/2, point mass m_c/2)
@@ -37,7 +39,7 @@ TimeStepEstimate critical_time_step(const Model& model, double fraction) {
         const LawCoefficients k = model.law->at(p, delta, share * b.radius, share * b.mass);
         const double k_n = model.law->stiffness(k);
         for (const auto& [stiff, damp] : {std::pair{k_n, k.c_n}, std::pair{k.k_t, k.c_t}}) {
-          const double used = exact_point_mass ? damp : 0.0;
+          const double used = damped ? damp : 0.0;
           const double dt = damped_critical_step(stiff, used, m_point);
           if (dt < best.critical)
             best = {dt, static_cast<Index>(i), stiff, used / (2.0 * std::sqrt(stiff * m_point))};

@@ -25,13 +25,21 @@
 // over all bodies, both directions, is returned; infinity if no contact can
 // happen (one grain and no walls).
 //
-// The damping enters only for isotropic bodies (spheres), where m_c = 2m/7
-// is exact. For faceted grains m_c is a worst case (the bounding radius and
-// the smallest moment), and with the damping computed from the whole body's
-// m* the worst-case zeta is 0.76 for the sub-angular preset (1.01 angular),
-// which would halve their step (measured with the presets at restitution
-// 0.5); whether their contacts need it is open (issue 10 note, session 5).
-// Faceted grains keep the undamped bound 2 sqrt(m_c/k) until it is measured.
+// The damping enters for isotropic bodies (spheres), where m_c = 2m/7 is
+// exact, and for concave grains (compound shapes). For faceted grains m_c is
+// a worst case (the bounding radius and the smallest moment), and with the
+// damping computed from the whole body's m* the worst-case zeta is 0.76 for
+// the sub-angular preset (1.01 angular), which halves their step (measured
+// with the presets at restitution 0.5). Convex faceted grains keep the
+// undamped bound 2 sqrt(m_c/k): every preset deposits, compacts and shears
+// with it, at deposition friction up to 1. Concave grains did not: a pair of
+// them touches at several places at once (one result per piece pair), so a
+// grain in a loose deposit at friction 1 feels several parallel springs and
+// dampers, and at 0.4 of the undamped bound spherical-harmonic grains spun
+// up in a period-two oscillation (angular velocity flipping every step, a
+// grain's contacts pulling on every other step) until one went non-finite
+// (measured 2026-12-07: no fault without damping, none without friction,
+// none at the damped bound; docs/grains.md).
 //
 // Why the damping term matters (measured): glass beads (e = 0.5) deposited
 // at friction 0.6 or 1.0 with 0.4 of the undamped step never came to rest:

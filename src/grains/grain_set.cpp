@@ -1,4 +1,5 @@
 // Grain sets (see grain_set.h).
+#include "core/text.h"
 #include "grains/grain_set.h"
 
 #include "core/error.h"
@@ -33,11 +34,6 @@ std::vector<double> sieve_sizes(const SieveRange& sieve, int count, Rng& rng) {
 void scale_to(TriMesh& mesh, double size) {
   const double s = size / size_of(mesh);
   for (Vec3& v : mesh.vertices) v *= s;
-}
-
-std::string lower(std::string s) {
-  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return s;
 }
 
 }  // namespace

@@ -41,12 +41,15 @@
 namespace grainlab {
 
 // A new field in these structs must be written below (and the version bumped).
-static_assert(sizeof(ContactResult) == 104, "ContactResult changed: update io/checkpoint.cpp and kCheckpointVersion");
+// ContactResult::share is not written: the narrowphase sets it again before
+// the next forces (as it does every geometric field of a contact), and a
+// contact read back carries share 1, as it carries what it did not store.
+static_assert(sizeof(ContactResult) == 112, "ContactResult changed: update io/checkpoint.cpp and kCheckpointVersion");
 static_assert(sizeof(PairCache) == 64, "PairCache changed: update io/checkpoint.cpp and kCheckpointVersion");
 // CandidatePair::first_contact and pieces_cold are hints, not state: they are
 // not written and read back as kUnknownContacts and false.
 static_assert(sizeof(CandidatePair) == 88, "CandidatePair changed: update io/checkpoint.cpp and kCheckpointVersion");
-static_assert(sizeof(Contact) == 200, "Contact changed: update io/checkpoint.cpp and kCheckpointVersion");
+static_assert(sizeof(Contact) == 208, "Contact changed: update io/checkpoint.cpp and kCheckpointVersion");
 
 namespace {
 

@@ -4,6 +4,7 @@
 // of spec_fields.h, so unknown tables and keys are found with a suggestion
 // (closest valid name by edit distance), values are checked for type, the
 // sand preset goes first, and validate() checks every value for sense.
+#include "core/text.h"
 #include "io/config.h"
 
 #include "core/bounded_read.h"
@@ -225,21 +226,6 @@ std::string where(const std::string& source, int line, int column = 0) {
 }
 
 int line_of(const toml::source_region& r) { return static_cast<int>(r.begin.line); }
-
-// Levenshtein distance, for "did you mean" suggestions.
-std::size_t edit_distance(std::string_view a, std::string_view b) {
-  std::vector<std::size_t> prev(b.size() + 1), cur(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) prev[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    cur[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t subst = prev[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1);
-      cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, subst});
-    }
-    std::swap(prev, cur);
-  }
-  return prev[b.size()];
-}
 
 // " Did you mean 'x'?" when a candidate is close enough, else "".
 std::string suggestion(std::string_view name, const std::vector<std::string>& candidates) {

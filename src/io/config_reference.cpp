@@ -1,6 +1,7 @@
 // Reads each registered test's commented default config line by line:
 //   "# meaning of the table" / "[table]" / "key = value   # unit, meaning"
 // and merges the tables of all tests in first-seen order.
+#include "core/text.h"
 #include "io/config_reference.h"
 
 #include "dynamics/contact_law.h"
@@ -28,12 +29,6 @@ struct TableDoc {
   std::vector<std::string> tests;
   std::vector<KeyDoc> keys;
 };
-
-std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(' ');
-  const auto e = s.find_last_not_of(' ');
-  return b == std::string::npos ? std::string() : s.substr(b, e - b + 1);
-}
 
 // Markdown table cells may not hold a bare '|'.
 std::string cell(const std::string& s) {
@@ -69,7 +64,7 @@ void read_defaults(const std::string& test, ContactLaw law, bool laws_only, std:
       continue;
     }
     if (line.starts_with("#")) {
-      if (!header) comment = trim(line.substr(1));
+      if (!header) comment = trim(line.substr(1), " ");
       continue;
     }
     if (line.starts_with("[")) {
@@ -86,8 +81,8 @@ void read_defaults(const std::string& test, ContactLaw law, bool laws_only, std:
     const auto eq = line.find(" = ");
     const auto hash = line.find(" # ", eq);
     KeyDoc& key = find_or_add(table->keys, line.substr(0, eq), &KeyDoc::key);
-    key.doc = hash == std::string::npos ? std::string() : trim(line.substr(hash + 3));
-    key.defaults.emplace_back(test, trim(line.substr(eq + 3, hash == std::string::npos ? std::string::npos : hash - eq - 3)));
+    key.doc = hash == std::string::npos ? std::string() : trim(line.substr(hash + 3), " ");
+    key.defaults.emplace_back(test, trim(line.substr(eq + 3, hash == std::string::npos ? std::string::npos : hash - eq - 3), " "));
   }
 }
 

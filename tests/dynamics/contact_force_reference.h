@@ -19,6 +19,7 @@ struct ContactKinematics {
   double m_eff;   // kg
   double r_eff;   // m
   double gain = 1;  // multiplies the elastic normal force (a faceted contact's |G|, collision/soft_depth.h)
+  double share = 1;  // multiplies the damping and the tangential spring (ContactResult::share)
 };
 
 // Force on body b (on a it is the opposite), updating the tangential spring
@@ -28,7 +29,8 @@ struct ContactKinematics {
 template <typename Law>
 Vec3 contact_force(const PairCoefficients& p, const ContactKinematics& c, double dt, Vec3& xi,
                    double* normal_force_out = nullptr, LawCoefficients* coefficients_out = nullptr) {
-  const LawCoefficients k = Law::at(p, c.delta, c.r_eff, c.m_eff);
+  LawCoefficients k = Law::at(p, c.delta, c.r_eff, c.m_eff);
+  k.c_n *= c.share, k.k_t *= c.share, k.c_t *= c.share;
   if (coefficients_out) *coefficients_out = k;
   const double v_n = c.v_rel.dot(c.normal);
   const Vec3 v_t = c.v_rel - v_n * c.normal;

@@ -65,9 +65,10 @@ TEST(ContactLanes, FourContactsAtOnceGiveWhatOneAtATimeGives) {
         c.m_eff = 1e-9 + 1e-6 * u(rng);
         c.r_eff = 0.5 * size;
         c.gain = 0.5 + u(rng);
+        c.share = u(rng) < 0.7 ? 1.0 : u(rng);  // a concave pair's result along a seam: a share of one contact
         if (u(rng) < 0.1) {  // separating fast enough that the damper outpulls the spring: f_n clamps at 0
           const LawCoefficients k = law->at(pair[l], c.delta, c.r_eff, c.m_eff);
-          c.v_rel += (k.c_n > 0 ? 2 * c.gain * k.k_n * c.delta / k.c_n : 0.0) * c.normal;
+          c.v_rel += (k.c_n > 0 ? 2 * c.gain * k.k_n * c.delta / (c.share * k.c_n) : 0.0) * c.normal;
         }
         const double kind = u(rng);
         // Zero, nearly along the normal (turned through up to 89.4 degrees), or anywhere.
@@ -78,7 +79,7 @@ TEST(ContactLanes, FourContactsAtOnceGiveWhatOneAtATimeGives) {
                 : kind < 0.25 ? Vec3(length * (c.normal + 0.01 * random_unit(rng)))
                               : Vec3(length * random_unit(rng));
         lanes.nx[l] = c.normal.x(), lanes.ny[l] = c.normal.y(), lanes.nz[l] = c.normal.z();
-        lanes.delta[l] = c.delta, lanes.gain[l] = c.gain;
+        lanes.delta[l] = c.delta, lanes.gain[l] = c.gain, lanes.share[l] = c.share;
         lanes.vx[l] = c.v_rel.x(), lanes.vy[l] = c.v_rel.y(), lanes.vz[l] = c.v_rel.z();
         lanes.m_eff[l] = c.m_eff, lanes.r_eff[l] = c.r_eff;
         lanes.xix[l] = xi[l].x(), lanes.xiy[l] = xi[l].y(), lanes.xiz[l] = xi[l].z();

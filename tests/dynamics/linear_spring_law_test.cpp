@@ -122,7 +122,7 @@ TEST(LinearSpringLaw, TwoSpheresPushWithKTimesTheOverlap) {
   PairCoefficientsOf<Lanes> p{};
   for (int l = 0; l < kLanes; ++l) {
     lanes.nx[l] = 1, lanes.delta[l] = (l + 1) * delta, lanes.vx[l] = -0.3, lanes.vy[l] = 0.1;
-    lanes.m_eff[l] = c.m_eff, lanes.r_eff[l] = c.r_eff, lanes.gain[l] = 1;
+    lanes.m_eff[l] = c.m_eff, lanes.r_eff[l] = c.r_eff, lanes.gain[l] = 1, lanes.share[l] = 1;
     p.c[0][l] = pair.c[0], p.friction[l] = pair.friction;
   }
   const ForceLanes four = contact_force_lanes<LinearSpringLaw>(p, lanes, dt);
