@@ -36,6 +36,19 @@ const EmbeddedIndices& bench_bead_indices() {
   return record;
 }
 
+const EmbeddedIndices& sh_ottawa_indices() {
+  // Measured 2026-12-07 on the project's 2-core machine by `grainlab grains
+  // index --preset sh-ottawa --seeds 1 --threads 1` (the default config with
+  // [grains] preset = "sh-ottawa": 24 shapes of 200 faces, 0.707-0.841 mm,
+  // seed 1; index box 10 x 8 d_max, 1,540 grains), the machine shared.
+  // e_min: frictionless deposition and compaction at 100 kPa, 35,500 steps,
+  // 3,567 s; e_max: deposition at friction 1.0, 10,050 steps, 289 s.
+  static const EmbeddedIndices record{
+      0xe207c6431ecfb4a7ull, 0x887d2105u, 0.49625250263200993, 0.8070688195049864, 0.5804473856225718, 1.0634213363787612,
+      "measured 2026-12-07 with `grainlab grains index --preset sh-ottawa --seeds 1` (seed 1)"};
+  return record;
+}
+
 std::uint64_t index_key_hash(const LabSpec& spec) {
   const std::string key = index_cache_key(spec);
   return fnv1a64(std::span(reinterpret_cast<const std::uint8_t*>(key.data()), key.size()));
@@ -43,7 +56,7 @@ std::uint64_t index_key_hash(const LabSpec& spec) {
 
 std::optional<EmbeddedIndices> embedded_index_densities(const LabSpec& spec) {
   const std::uint64_t key = index_key_hash(spec);
-  for (const EmbeddedIndices* r : {&default_grain_indices(), &bench_bead_indices()})
+  for (const EmbeddedIndices* r : {&default_grain_indices(), &bench_bead_indices(), &sh_ottawa_indices()})
     if (key == r->key_hash) return *r;
   return std::nullopt;
 }

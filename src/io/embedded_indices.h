@@ -5,7 +5,9 @@
 // those of the 2000-bead direct shear that grainlab is compared with other
 // sphere codes on (bench/liggghts/beads_direct_shear.toml: glass beads, its
 // material and time step), whose measurement (about 65,000 steps, a fifth of
-// that test's wall time) the other codes do not make.
+// that test's wall time) the other codes do not make. A third holds those of
+// the sh-ottawa preset with every other key at its default (an hour of one
+// core to measure).
 //
 // They are what `grainlab run` itself would measure (lab/index_densities.h,
 // one seed at the run's seed), for exactly the default inputs that the
@@ -42,6 +44,9 @@ const EmbeddedIndices& default_grain_indices();
 
 // The record for the beads of bench/liggghts/beads_direct_shear.toml.
 const EmbeddedIndices& bench_bead_indices();
+
+// The record for the default config with [grains] preset = "sh-ottawa".
+const EmbeddedIndices& sh_ottawa_indices();
 
 // fnv1a64 of index_cache_key(spec).
 std::uint64_t index_key_hash(const LabSpec& spec);
