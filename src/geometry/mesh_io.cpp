@@ -114,13 +114,37 @@ void validate_ply(const std::filesystem::path& path, std::uintmax_t size) {
   Element current;
   bool open_element = false, first_line = true;
   while (header < 65536 && bounded_getline(in, line, 65536, name, "a PLY header")) {
+    const std::uintmax_t line_start = header;
     header += line.size() + 1;
     if (!line.empty() && line.back() == '\r') line.pop_back();
+    // A NUL or other control character in the header (a binary file named
+    // .ply, or a damaged header) made assimp's reader, which takes a NUL for
+    // the end of a line, wait on the file forever (found by fuzzing).
+    const auto control = std::find_if(line.begin(), line.end(), [](char c) {
+      const auto u = static_cast<unsigned char>(c);
+      return (u < 0x20 && c != '\t') || u == 0x7f;
+    });
+    if (control != line.end()) {
+      input_error("mesh '{}': its PLY header holds a control character (byte 0x{:02x}) at byte {}, where a PLY "
+                  "header is text; the file is damaged or not a PLY file, re-export the mesh",
+                  name, static_cast<unsigned>(static_cast<unsigned char>(*control)),
+                  line_start + static_cast<std::uintmax_t>(control - line.begin()));
+    }
     std::istringstream words(line);
     std::string word;
     words >> word;
-    // Not a PLY file at all (no "ply" first): assimp says it cannot parse it.
-    if (std::exchange(first_line, false) && word != "ply") return;
+    // A PLY file starts with the line "ply". assimp's reader took other first
+    // lines ("plyply") and waited on the file for ever (found by fuzzing), so
+    // only a header checked whole to its end_header reaches it.
+    if (std::exchange(first_line, false)) {
+      std::string more;
+      if (word != "ply" || words >> more) {
+        input_error("mesh '{}': its first line is '{}', where a PLY file starts with the line 'ply'; the file is "
+                    "damaged or not a PLY file, re-export the mesh",
+                    name, excerpt(line, 40));
+      }
+      continue;
+    }
     // A header line of no PLY keyword, or an unknown format, made assimp's
     // reader loop for minutes (found by fuzzing): refused here.
     if (word == "format") {

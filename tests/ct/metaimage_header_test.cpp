@@ -70,12 +70,44 @@ TEST_F(MetaImageHeader, EachBrokenFieldIsRefusedNamingItsLine) {
             std::string::npos);
   EXPECT_NE(refusal(replaced(kFields, "CompressedData = False", "CompressedData = Maybe")).find("neither True nor"),
             std::string::npos);
+  EXPECT_NE(refusal("BinaryData" + std::string(300, 'V') + " = True\n" + kFields)
+                .find("line 1): a field name of 310 characters ('BinaryDataVVVV"),
+            std::string::npos)
+      << "MetaIO copied a name into 255 bytes (tests/fuzz/corpus/metaimage/crash_long_field_name_3d3cf5df)";
+  EXPECT_EQ(refusal("ITK_" + std::string(196, 'k') + " = a value\n" + kFields), "") << "200 characters";
   EXPECT_NE(refusal(kFields, "", "").find("no 'ElementDataFile' field"), std::string::npos);
   EXPECT_NE(refusal(kFields, "ElementDataFile = LOCALo\n").find("its data file '"), std::string::npos);
   EXPECT_NE(refusal(replaced(kFields, "DimSize = 4 3 2", "DimSize = 4 3 4")).find("is truncated or its header is "
                                                                                   "wrong"),
             std::string::npos)
       << "the data's length is still checked";
+}
+
+// ElementDataFile = LIST: the slice files' names follow, one a line. An
+// empty line made MetaIO read through a wild pointer (found by fuzzing:
+// tests/fuzz/corpus/metaimage/crash_empty_slice_name_5d53e8c7); a printf
+// pattern is a format MetaIO hands to printf.
+TEST_F(MetaImageHeader, SliceFilesAreListedOneALineOrByAPatternOfOneNumber) {
+  for (const char* name : {"s0.raw", "s1.raw"}) std::ofstream(dir_ / name, std::ios::binary) << std::string(12, 'x');
+  EXPECT_EQ(refusal(kFields, "ElementDataFile = LIST\n", "s0.raw\ns1.raw\n"), "");
+  EXPECT_EQ(refusal(kFields, "ElementDataFile = LIST 2\n", "s0.raw\ns1.raw\n"), "");
+  EXPECT_NE(refusal(kFields, "ElementDataFile = LIST\n", "s0.raw\n\n")
+                .find("line 15): slice file 2 of the 2 that 'ElementDataFile = LIST' and DimSize call for is an empty "
+                      "line"),
+            std::string::npos);
+  EXPECT_NE(refusal(kFields, "ElementDataFile = LIST\n", "s0.raw\n").find("slice file 2 of the 2 that "
+                                                                           "'ElementDataFile = LIST' and DimSize call "
+                                                                           "for is missing"),
+            std::string::npos);
+  EXPECT_NE(refusal(kFields, "ElementDataFile = LIST\n", "s0.raw\nnone.raw\n").find("none.raw' does not exist"),
+            std::string::npos);
+  EXPECT_NE(refusal(kFields, "ElementDataFile = LISTCALOL\n", "s0.raw\ns1.raw\n")
+                .find("line 13): 'ElementDataFile = LISTCALOL' starts with LIST, which MetaIO reads as a list"),
+            std::string::npos);
+  EXPECT_EQ(refusal(kFields, "ElementDataFile = s%d.raw 0 1 1\n", ""), "");
+  EXPECT_NE(refusal(kFields, "ElementDataFile = s%s.raw 0 1 1\n", "").find("is not a slice pattern"),
+            std::string::npos);
+  EXPECT_NE(refusal(kFields, "ElementDataFile = s%03d.raw 0\n", "").find("is not a slice pattern"), std::string::npos);
 }
 
 }  // namespace

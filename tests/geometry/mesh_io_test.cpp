@@ -161,8 +161,8 @@ TEST(MeshIo, GarbageRefused) {
   test::TempDir dir;
   write_text(dir / "junk.ply", "this is not a ply file\n");
   const std::string msg = test::input_error_of([&] { read_mesh(dir / "junk.ply"); });
-  EXPECT_CONTAINS(msg, "junk.ply");
-  EXPECT_CONTAINS(msg, "cannot be parsed");
+  EXPECT_CONTAINS(msg, "mesh '" + (dir / "junk.ply").string() + "': its first line is 'this is not a ply file', where "
+                       "a PLY file starts with the line 'ply'");
 }
 
 // A PLY header may announce any count; assimp reserved memory for it (a
@@ -248,6 +248,30 @@ TEST(MeshIo, PlyHeaderOfAnUnknownFormatOrKeywordIsRefused) {
   write_text(dir / "keyword.ply", "ply\nformat ascii 1.0\nelemert vertex 3\n" + rest);
   EXPECT_CONTAINS(test::input_error_of([&] { read_mesh(dir / "keyword.ply"); }),
                   "PLY header line 'elemert vertex 3' starts with no PLY keyword");
+}
+
+// A PLY header holding a NUL (a binary first line "ply\0...") made assimp's
+// reader wait on the file forever (found by fuzzing:
+// tests/fuzz/corpus/ply/hang_nul_in_header_8182730c): refused at its byte.
+TEST(MeshIo, PlyHeaderHoldingAControlCharacterOrNotStartingWithPlyIsRefused) {
+  test::TempDir dir;
+  const std::string rest = "element vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                           "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                           "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  write_text(dir / "nul.ply", "ply" + std::string(2, '\0') + "\xdd\nformat ascii 1.0\n" + rest);
+  EXPECT_CONTAINS(test::input_error_of([&] { read_mesh(dir / "nul.ply"); }),
+                  "its PLY header holds a control character (byte 0x00) at byte 3");
+  // A first line other than "ply" made assimp wait the same way
+  // (tests/fuzz/corpus/ply/hang_first_line_plyply_ab1de0a2).
+  write_text(dir / "plyply.ply", "plyply\nformat ascii 1.0\ncomment unit \nfocurbe ");
+  EXPECT_CONTAINS(test::input_error_of([&] { read_mesh(dir / "plyply.ply"); }),
+                  "its first line is 'plyply', where a PLY file starts with the line 'ply'");
+  write_text(dir / "bell.ply", "ply\nformat ascii 1.0\ncomment unit \a mm\n" + rest);
+  EXPECT_CONTAINS(test::input_error_of([&] { read_mesh(dir / "bell.ply"); }),
+                  "control character (byte 0x07) at byte 34");
+  // Tabs and CRLF line ends are text: the same file with them is read.
+  write_text(dir / "crlf.ply", "ply\r\nformat ascii 1.0\r\ncomment\tunit mm\r\n" + rest);
+  EXPECT_EQ(read_mesh(dir / "crlf.ply").faces.size(), 1u);
 }
 
 // A device or a pipe named like a mesh is refused before anything reads it.
