@@ -25,6 +25,7 @@ namespace {
 
 constexpr std::size_t kMaxValue = 1024;  // a value: a few numbers, a name or a file name
 constexpr std::size_t kMaxKey = 200;     // a field's name (MetaIO's buffer holds 254 characters)
+constexpr std::size_t kMaxText = 254;    // a value that is not numbers (MetaIO's buffers hold 254 characters)
 
 constexpr std::array<std::string_view, 37> kFields{
     "Comment",         "AcquisitionDate",    "ObjectType",      "ObjectSubType",
@@ -175,6 +176,16 @@ class Header {
   }
 
   void check_text(const std::string& key, const std::string& value, int n) const {
+    // MetaIO copies a text value (ObjectType, Name, Comment, ...) into a
+    // buffer of 255 bytes without a bound: a longer one overflowed it (found
+    // by fuzzing); numbers it parses, so lists of numbers may be longer.
+    const bool numbers = value.find_first_not_of("0123456789+-.eE \t") == std::string::npos;
+    if (!numbers && value.size() > kMaxText) {
+      fail(n, fmt::format("the value of '{}' is a text of {} characters, more than the {} a MetaImage text field "
+                          "holds",
+                          key, value.size(), kMaxText),
+           "shorten it");
+    }
     if (value.size() > kMaxValue) {
       fail(n, fmt::format("the value of '{}' has {} characters, more than the {} a MetaImage field holds", key,
                           value.size(), kMaxValue),
@@ -282,7 +293,7 @@ void check_slice_list(const Header& h, const fs::path& path, std::uint64_t heade
   in.seekg(static_cast<std::streamoff>(header_bytes));
   std::string name;
   for (int k = 1; k <= static_cast<int>(files); ++k) {
-    const bool got = static_cast<bool>(bounded_getline(in, name, kMaxValue, path.string(), "a MetaImage slice list"));
+    const bool got = static_cast<bool>(bounded_getline(in, name, kMaxText, path.string(), "a MetaImage slice list"));
     name = trim(name);
     const bool printable = std::all_of(name.begin(), name.end(), [](char c) {
       return static_cast<unsigned char>(c) >= ' ' && c != 127;

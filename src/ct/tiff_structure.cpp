@@ -24,7 +24,8 @@ constexpr std::uint64_t kMaxSide = 1u << 20;
 constexpr std::uint64_t kMaxEntries = 4096;
 
 enum Tag : std::uint16_t {
-  kNewSubfileType = 254, kSubfileType = 255, kWidth = 256, kLength = 257, kBitsPerSample = 258, kCompression = 259, kStripOffsets = 273,
+  kNewSubfileType = 254, kSubfileType = 255, kWidth = 256, kLength = 257, kBitsPerSample = 258, kCompression = 259,
+  kStripOffsets = 273,
   kSamplesPerPixel = 277, kRowsPerStrip = 278, kStripByteCounts = 279, kPlanar = 284, kDateTime = 306,
   kTileWidth = 322, kTileLength = 323, kTileOffsets = 324, kTileByteCounts = 325
 };
@@ -125,11 +126,23 @@ class TiffWalk {
       if (entry.at > size_ || bytes > size_ - entry.at) {
         fail("the {} bytes of tag {} at byte {} lie past the file's end ({} bytes)", bytes, tag, entry.at, size_);
       }
+      if (entry.type == 2) check_text_ends(tag, entry);
       if (tag == kDateTime) check_date_time(entry);
       if (!entries.emplace(tag, entry).second) fail("tag {} appears twice in one directory", tag);
     }
     const std::uint64_t next = first + n * entry_bytes;
     return big_ ? u64(next) : u32(next);
+  }
+
+  // TIFF text (type 2) ends with a NUL. libtiff keeps the bytes of a tag it
+  // does not know as they are, and ITK measured them with strlen: a text
+  // without its NUL made it read past libtiff's buffer (found by fuzzing).
+  void check_text_ends(std::uint16_t tag, const Entry& e) {
+    std::uint8_t last = 1;
+    if (e.count > 0) read(e.at + e.count - 1, &last, 1);
+    if (last != 0) {
+      fail("tag {} is text (type 2) of {} bytes that does not end with a NUL, as TIFF text must", tag, e.count);
+    }
   }
 
   // ITK copies DateTime's 20 bytes ("YYYY:MM:DD HH:MM:SS" and a NUL, as TIFF
@@ -192,8 +205,8 @@ class TiffWalk {
       return entries.count(tag) ? fmt::format("{} = {}", tag, single(entries, tag, "SubfileType", 0, 0, UINT64_MAX))
                                 : std::string();
     };
-    std::string kinds = kind(kNewSubfileType) + (entries.count(kSubfileType) && entries.count(kNewSubfileType) ? ", " : "") +
-                        kind(kSubfileType);
+    const bool both = entries.count(kSubfileType) && entries.count(kNewSubfileType);
+    std::string kinds = kind(kNewSubfileType) + (both ? ", " : "") + kind(kSubfileType);
     if (kinds.empty()) kinds = "no subfile type";
     if (page_ == 0) {
       first_ = page;

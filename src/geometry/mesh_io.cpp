@@ -30,6 +30,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cctype>
 #include <cerrno>
@@ -91,6 +92,25 @@ std::uintmax_t ply_type_size(std::string_view t) {
   if (t == "int" || t == "uint" || t == "float" || t == "int32" || t == "uint32" || t == "float32") return 4;
   if (t == "double" || t == "float64") return 8;
   return 0;
+}
+
+// ASCII PLY data is text: a NUL or another control character in it (a
+// damaged or binary body) made assimp's reader wait on the file for ever
+// (found by fuzzing). `in` stands after the header, at byte `at`.
+void check_ply_ascii_body(std::istream& in, const std::string& name, std::uintmax_t at) {
+  std::array<char, 65536> buffer{};
+  while (in) {
+    in.read(buffer.data(), buffer.size());
+    const auto got = static_cast<std::size_t>(in.gcount());
+    for (std::size_t i = 0; i < got; ++i, ++at) {
+      const auto u = static_cast<unsigned char>(buffer[i]);
+      if ((u < 0x20 && u != '\t' && u != '\n' && u != '\r') || u == 0x7f) {
+        input_error("mesh '{}': its ASCII PLY data holds a control character (byte 0x{:02x}) at byte {}, where "
+                    "ASCII data is numbers and spaces; the file is damaged, re-export the mesh",
+                    name, static_cast<unsigned>(u), at);
+      }
+    }
+  }
 }
 
 // Refuses a PLY whose header announces more elements than the file can hold.
@@ -185,6 +205,7 @@ void validate_ply(const std::filesystem::path& path, std::uintmax_t size) {
       current.min_bytes += ascii ? 2 : ply_type_size(type == "list" ? count_type : type);
     } else if (word == "end_header") {
       if (open_element) add(current);
+      if (ascii) check_ply_ascii_body(in, name, header);
       const std::uintmax_t body = size - std::min(size, header);
       if (need > body) {
         std::string counts;

@@ -75,6 +75,11 @@ TEST_F(MetaImageHeader, EachBrokenFieldIsRefusedNamingItsLine) {
             std::string::npos)
       << "MetaIO copied a name into 255 bytes (tests/fuzz/corpus/metaimage/crash_long_field_name_3d3cf5df)";
   EXPECT_EQ(refusal("ITK_" + std::string(196, 'k') + " = a value\n" + kFields), "") << "200 characters";
+  EXPECT_NE(refusal("Name = " + std::string(300, '\xff') + "\n" + kFields)
+                .find("line 1): the value of 'Name' is a text of 300 characters, more than the 254"),
+            std::string::npos)
+      << "MetaIO copied text into 255 bytes (tests/fuzz/corpus/metaimage/crash_long_text_value_11bf7fd3)";
+  EXPECT_EQ(refusal("Name = " + std::string(254, 'n') + "\n" + kFields), "");
   EXPECT_NE(refusal(kFields, "", "").find("no 'ElementDataFile' field"), std::string::npos);
   EXPECT_NE(refusal(kFields, "ElementDataFile = LOCALo\n").find("its data file '"), std::string::npos);
   EXPECT_NE(refusal(replaced(kFields, "DimSize = 4 3 2", "DimSize = 4 3 4")).find("is truncated or its header is "

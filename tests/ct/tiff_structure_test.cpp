@@ -28,6 +28,7 @@ struct TiffSpec {
   bool little = true;   // "II" (else "MM")
   std::uint32_t width = 5, height = 3;
   std::string date;     // DateTime, when not empty (with its NUL: 20 bytes for "YYYY:MM:DD HH:MM:SS")
+  bool date_nul = true; // DateTime's count takes in its NUL
   std::int64_t strip_offset = -1, strip_bytes = -1;  // -1: where and how long the pixels are
   bool loop = false;    // the next-directory offset points back at the directory
   bool twice = false;   // ImageWidth given twice
@@ -75,7 +76,7 @@ std::string make_tiff(const TiffSpec& t) {
                              {277, 3, 1, 1}, {278, 4, 1, t.height},
                              {279, 4, 1, t.strip_bytes < 0 ? pixels : static_cast<std::uint64_t>(t.strip_bytes)}};
   if (t.twice) entries.insert(entries.begin() + 1, {256, 4, 1, t.width});
-  if (!t.date.empty()) entries.push_back({306, 2, t.date.size() + 1, date_at});
+  if (!t.date.empty()) entries.push_back({306, 2, t.date.size() + (t.date_nul ? 1 : 0), date_at});
   b.put(entries.size(), t.big ? 8 : 2);
   for (const Entry& e : entries) {
     b.put(e.tag, 2), b.put(e.type, 2), b.put(e.count, word);
@@ -141,6 +142,10 @@ TEST_F(TiffStructure, EachBreakageIsRefusedByName) {
       // (tests/fuzz/corpus/tiff/datetime_nul_first_3c98c5ba).
       {[](TiffSpec& t) { t.date = std::string(1, '\0') + "2026:12:06 22:00:00"; },
        "DateTime (tag 306) holds 1 characters up to its first NUL"},
+      // Text without its NUL: ITK measured it with strlen past libtiff's
+      // buffer (tests/fuzz/corpus/tiff/text_without_nul_da388dbf).
+      {[](TiffSpec& t) { t.date = "2026:12:06 22:00:00"; t.date_nul = false; },
+       "tag 306 is text (type 2) of 19 bytes that does not end with a NUL"},
       {[](TiffSpec& t) { t.loop = true; }, "comes back to the directory at byte"},
       {[](TiffSpec& t) { t.strip_offset = 1000; }, "strip 1 (15 bytes at byte 1000) lies past the file's end"},
       {[](TiffSpec& t) { t.strip_bytes = 10; }, "uncompressed strip 1 holds 10 bytes, fewer than the 15"},

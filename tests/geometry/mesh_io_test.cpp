@@ -269,6 +269,13 @@ TEST(MeshIo, PlyHeaderHoldingAControlCharacterOrNotStartingWithPlyIsRefused) {
   write_text(dir / "bell.ply", "ply\nformat ascii 1.0\ncomment unit \a mm\n" + rest);
   EXPECT_CONTAINS(test::input_error_of([&] { read_mesh(dir / "bell.ply"); }),
                   "control character (byte 0x07) at byte 34");
+  // ASCII data is text too: a NUL in it made assimp wait the same way
+  // (tests/fuzz/corpus/ply/hang_nul_in_ascii_data_80cc5b86).
+  const std::string header = "ply\nformat ascii 1.0\n" + rest.substr(0, rest.find("0 0 0"));
+  write_text(dir / "data.ply", header + "0 0 0\n1 0" + std::string(1, '\0') + " 0\n0 1 0\n3 0 1 2\n");
+  EXPECT_CONTAINS(test::input_error_of([&] { read_mesh(dir / "data.ply"); }),
+                  "its ASCII PLY data holds a control character (byte 0x00) at byte " +
+                      std::to_string(header.size() + 9));
   // Tabs and CRLF line ends are text: the same file with them is read.
   write_text(dir / "crlf.ply", "ply\r\nformat ascii 1.0\r\ncomment\tunit mm\r\n" + rest);
   EXPECT_EQ(read_mesh(dir / "crlf.ply").faces.size(), 1u);
