@@ -1,6 +1,7 @@
 #include "ct/metaimage_header.h"
 
 #include "core/bounded_line.h"
+#include "ct/compressed_data.h"
 #include "ct/declared_data.h"
 
 #include <fmt/format.h>
@@ -361,11 +362,26 @@ void check_metaimage_header(const fs::path& path) {
   }
   const bool compressed = is_true(h.value("CompressedData"));
   const bool binary = !h.has("BinaryData") || is_true(h.value("BinaryData"));
-  if (compressed || !binary) return;  // MetaIO reads compressed and ASCII data by their own lengths
   const int bytes = element_bytes(h.value("ElementType"));
   std::uint64_t need = declared_bytes(h.value("DimSize"), bytes);
   const std::string& channels = h.value("ElementNumberOfChannels");
   if (!channels.empty()) need *= static_cast<std::uint64_t>(std::atoll(channels.c_str()));
+  if (compressed) {
+    // MetaIO inflated until the image was full, for ever when the stream
+    // broke or ended first (compressed_data.h).
+    const std::uint64_t size = h.has("CompressedDataSize") ? std::atoll(h.value("CompressedDataSize").c_str()) : 0;
+    const InflatedPrefix got = inflate_prefix(data, data_file == "LOCAL" ? header_bytes : 0, size, need);
+    if (got.produced < need) {
+      h.fail(h.line("ElementDataFile"),
+             fmt::format("its compressed data {} after {} of the {} bytes that 'DimSize = {}' of 'ElementType = {}' "
+                         "call for",
+                         got.error.empty() ? "ends" : "is broken (zlib: " + excerpt(got.error, 80) + ")", got.produced,
+                         need, h.value("DimSize"), h.value("ElementType")),
+             "copy the file again, or fix DimSize and ElementType");
+    }
+    return;
+  }
+  if (!binary) return;  // MetaIO reads ASCII data by its own lengths
   DeclaredData d{path, "MetaImage",
                  fmt::format("'DimSize = {}' of 'ElementType = {}'{}", h.value("DimSize"), h.value("ElementType"),
                              channels.empty() ? "" : fmt::format(" x {} channels", channels)),

@@ -94,22 +94,70 @@ std::uintmax_t ply_type_size(std::string_view t) {
   return 0;
 }
 
+// An element of a PLY header: its name and count, the least bytes one record
+// takes, and which of its properties are lists.
+struct PlyElement {
+  std::string name;
+  std::uintmax_t count = 0, min_bytes = 0;
+  std::vector<bool> lists;
+};
+
 // ASCII PLY data is text: a NUL or another control character in it (a
-// damaged or binary body) made assimp's reader wait on the file for ever
-// (found by fuzzing). `in` stands after the header, at byte `at`.
-void check_ply_ascii_body(std::istream& in, const std::string& name, std::uintmax_t at) {
-  std::array<char, 65536> buffer{};
-  while (in) {
-    in.read(buffer.data(), buffer.size());
-    const auto got = static_cast<std::size_t>(in.gcount());
-    for (std::size_t i = 0; i < got; ++i, ++at) {
-      const auto u = static_cast<unsigned char>(buffer[i]);
+// damaged or binary body) made assimp's reader wait on the file for ever, and
+// a list count of many digits made it reserve 28 GB (both found by fuzzing).
+// So the data is walked value by value as the header lays it out (`in`
+// stands after the header, at byte `at` of `size`): each value at most 64
+// characters, each list count a whole number that the bytes after it can
+// hold (two characters a value).
+void check_ply_ascii_body(std::istream& in, const std::string& name, std::uintmax_t at, std::uintmax_t size,
+                          const std::vector<PlyElement>& elements) {
+  std::string token;
+  std::uintmax_t token_at = 0;
+  const auto next = [&]() {
+    token.clear();
+    for (int c; (c = in.get()) != std::char_traits<char>::eof(); ++at) {
+      const auto u = static_cast<unsigned char>(c);
       if ((u < 0x20 && u != '\t' && u != '\n' && u != '\r') || u == 0x7f) {
         input_error("mesh '{}': its ASCII PLY data holds a control character (byte 0x{:02x}) at byte {}, where "
                     "ASCII data is numbers and spaces; the file is damaged, re-export the mesh",
                     name, static_cast<unsigned>(u), at);
       }
+      if (std::isspace(u)) {
+        if (token.empty()) continue;
+        ++at;
+        return true;
+      }
+      if (token.empty()) token_at = at;
+      if (token.size() == 64) {
+        input_error("mesh '{}': its ASCII PLY data holds a value of more than 64 characters at byte {}; the file is "
+                    "damaged, re-export the mesh",
+                    name, token_at);
+      }
+      token.push_back(static_cast<char>(c));
     }
+    return !token.empty();
+  };
+  for (const PlyElement& e : elements) {
+    for (std::uintmax_t record = 0; record < e.count; ++record) {
+      for (const bool list : e.lists) {
+        if (!next()) return;  // fewer values than the header announces: assimp says so
+        if (!list) continue;
+        const bool whole = token.size() <= 18 && token.find_first_not_of("0123456789") == std::string::npos;
+        const std::uintmax_t n = whole ? std::stoull(token) : 0;
+        if (!whole || n > (size - std::min(size, at)) / 2) {
+          input_error("mesh '{}': {} {} starts a list with the count '{}' at byte {}, {}; the file is damaged, "
+                      "re-export the mesh",
+                      name, e.name, record + 1, excerpt(token, 20), token_at,
+                      whole ? fmt::format("more values than the {} bytes after it hold", size - std::min(size, at))
+                            : std::string("not a whole number"));
+        }
+        for (std::uintmax_t k = 0; k < n; ++k) {
+          if (!next()) return;
+        }
+      }
+    }
+  }
+  while (next()) {
   }
 }
 
@@ -120,10 +168,7 @@ void validate_ply(const std::filesystem::path& path, std::uintmax_t size) {
   std::string line;
   bool ascii = true;
   std::uintmax_t header = 0, need = 0;
-  struct Element {
-    std::string name;
-    std::uintmax_t count = 0, min_bytes = 0;
-  };
+  using Element = PlyElement;
   std::vector<Element> elements;
   const auto add = [&](const Element& e) {
     const std::uintmax_t per = std::max<std::uintmax_t>(e.min_bytes, 1);  // no property: still refuse absurd counts
@@ -203,9 +248,9 @@ void validate_ply(const std::filesystem::path& path, std::uintmax_t size) {
                     "after an 'element' line; the file is damaged, re-export the mesh",
                     name, excerpt(line, 80));
       current.min_bytes += ascii ? 2 : ply_type_size(type == "list" ? count_type : type);
+      current.lists.push_back(type == "list");
     } else if (word == "end_header") {
       if (open_element) add(current);
-      if (ascii) check_ply_ascii_body(in, name, header);
       const std::uintmax_t body = size - std::min(size, header);
       if (need > body) {
         std::string counts;
@@ -216,6 +261,7 @@ void validate_ply(const std::filesystem::path& path, std::uintmax_t size) {
                     name, elements.size(), excerpt(counts, 200),
                     need > size ? fmt::format("more than the whole file's {}", size) : std::to_string(need), body);
       }
+      if (ascii) check_ply_ascii_body(in, name, header, size, elements);
       return;
     }
   }

@@ -9,6 +9,7 @@
 #include "ct/metaimage_header.h"
 
 #include <gtest/gtest.h>
+#include <zlib.h>
 
 #include <fstream>
 #include <string>
@@ -113,6 +114,34 @@ TEST_F(MetaImageHeader, SliceFilesAreListedOneALineOrByAPatternOfOneNumber) {
   EXPECT_NE(refusal(kFields, "ElementDataFile = s%s.raw 0 1 1\n", "").find("is not a slice pattern"),
             std::string::npos);
   EXPECT_NE(refusal(kFields, "ElementDataFile = s%03d.raw 0\n", "").find("is not a slice pattern"), std::string::npos);
+}
+
+std::string zlib_of(const std::string& bytes) {
+  uLongf size = compressBound(bytes.size());
+  std::string out(size, '\0');
+  compress2(reinterpret_cast<Bytef*>(out.data()), &size, reinterpret_cast<const Bytef*>(bytes.data()), bytes.size(), 6);
+  out.resize(size);
+  return out;
+}
+
+// MetaIO inflated compressed data until the image was full, for ever when the
+// stream broke or ended first (found by fuzzing: a hang,
+// tests/fuzz/corpus/metaimage/hang_broken_zlib_ee684a79): grainlab inflates it
+// first.
+TEST_F(MetaImageHeader, CompressedDataMustInflateToTheWholeImage) {
+  const std::string fields = replaced(kFields, "CompressedData = False", "CompressedData = True");
+  EXPECT_EQ(refusal(fields, "ElementDataFile = LOCAL\n", zlib_of(std::string(24, '\x07'))), "");
+  EXPECT_NE(refusal(fields, "ElementDataFile = LOCAL\n", "not zlib data\n")
+                .find("line 13): its compressed data is broken (zlib: incorrect header check) after 0 of the 24 bytes "
+                      "that 'DimSize = 4 3 2' of 'ElementType = MET_UCHAR' call for"),
+            std::string::npos);
+  EXPECT_NE(refusal(fields, "ElementDataFile = LOCAL\n", "x = 3\n").find("is broken (zlib: it calls for a preset "
+                                                                          "dictionary"),
+            std::string::npos)
+      << "the fuzzed header's text after ElementDataFile reads as a zlib header asking for a dictionary";
+  EXPECT_NE(refusal(fields, "ElementDataFile = LOCAL\n", zlib_of(std::string(12, '\x07')))
+                .find("its compressed data ends after 12 of the 24 bytes"),
+            std::string::npos);
 }
 
 }  // namespace

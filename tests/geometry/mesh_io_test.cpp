@@ -276,6 +276,16 @@ TEST(MeshIo, PlyHeaderHoldingAControlCharacterOrNotStartingWithPlyIsRefused) {
   EXPECT_CONTAINS(test::input_error_of([&] { read_mesh(dir / "data.ply"); }),
                   "its ASCII PLY data holds a control character (byte 0x00) at byte " +
                       std::to_string(header.size() + 9));
+  // A list count of many digits made assimp reserve 28 GB
+  // (tests/fuzz/corpus/ply/oom_list_count_554bc5ee): each count is held to
+  // the bytes after it.
+  write_text(dir / "count.ply", header + "0 0 0\n1 0 0\n0 1 0\n4000000000 0 1 2\n");
+  EXPECT_CONTAINS(test::input_error_of([&] { read_mesh(dir / "count.ply"); }),
+                  "face 1 starts a list with the count '4000000000' at byte " + std::to_string(header.size() + 18) +
+                      ", more values than the 6 bytes after it hold");
+  write_text(dir / "long.ply", header + "0 0 0\n1 0 0\n0 1 0\n3 0 1 " + std::string(70, '2') + "\n");
+  EXPECT_CONTAINS(test::input_error_of([&] { read_mesh(dir / "long.ply"); }),
+                  "holds a value of more than 64 characters at byte " + std::to_string(header.size() + 24));
   // Tabs and CRLF line ends are text: the same file with them is read.
   write_text(dir / "crlf.ply", "ply\r\nformat ascii 1.0\r\ncomment\tunit mm\r\n" + rest);
   EXPECT_EQ(read_mesh(dir / "crlf.ply").faces.size(), 1u);
