@@ -95,11 +95,12 @@ std::uintmax_t ply_type_size(std::string_view t) {
 }
 
 // An element of a PLY header: its name and count, the least bytes one record
-// takes, and which of its properties are lists.
+// takes, which of its properties are lists, and their names.
 struct PlyElement {
   std::string name;
   std::uintmax_t count = 0, min_bytes = 0;
   std::vector<bool> lists;
+  std::vector<std::string> properties;
 };
 
 // ASCII PLY data is text: a NUL or another control character in it (a
@@ -232,6 +233,14 @@ void validate_ply(const std::filesystem::path& path, std::uintmax_t size) {
       words >> current.name >> current.count;
       if (!words) input_error("mesh '{}': PLY header line '{}' is not 'element NAME COUNT'; re-export the mesh", name,
                               excerpt(line, 80));
+      // An element or a property named twice corrupted assimp's memory (found
+      // by fuzzing: a heap corruption).
+      for (const Element& e : elements) {
+        if (e.name == current.name)
+          input_error("mesh '{}': its PLY header announces the element '{}' twice; the file is damaged, re-export the "
+                      "mesh",
+                      name, excerpt(current.name, 40));
+      }
     } else if (word == "property") {
       // A property of an unknown type, or none, made assimp's binary reader
       // read out of bounds (found by fuzzing): each is 'property TYPE NAME' or
@@ -248,6 +257,11 @@ void validate_ply(const std::filesystem::path& path, std::uintmax_t size) {
                     "after an 'element' line; the file is damaged, re-export the mesh",
                     name, excerpt(line, 80));
       current.min_bytes += ascii ? 2 : ply_type_size(type == "list" ? count_type : type);
+      if (std::find(current.properties.begin(), current.properties.end(), property) != current.properties.end())
+        input_error("mesh '{}': its PLY header gives element '{}' the property '{}' twice; the file is damaged, "
+                    "re-export the mesh",
+                    name, excerpt(current.name, 40), excerpt(property, 40));
+      current.properties.push_back(property);
       current.lists.push_back(type == "list");
     } else if (word == "end_header") {
       if (open_element) add(current);

@@ -286,6 +286,16 @@ TEST(MeshIo, PlyHeaderHoldingAControlCharacterOrNotStartingWithPlyIsRefused) {
   write_text(dir / "long.ply", header + "0 0 0\n1 0 0\n0 1 0\n3 0 1 " + std::string(70, '2') + "\n");
   EXPECT_CONTAINS(test::input_error_of([&] { read_mesh(dir / "long.ply"); }),
                   "holds a value of more than 64 characters at byte " + std::to_string(header.size() + 24));
+  // An element or a property named twice corrupted assimp's memory
+  // (tests/fuzz/corpus/ply/heap_corruption_element_twice_0148e63a).
+  write_text(dir / "twice.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n" + rest);
+  EXPECT_CONTAINS(test::input_error_of([&] { read_mesh(dir / "twice.ply"); }),
+                  "its PLY header announces the element 'vertex' twice");
+  std::string x_twice = rest;
+  x_twice.replace(x_twice.find("property float y"), 16, "property float x");
+  write_text(dir / "x_twice.ply", "ply\nformat ascii 1.0\n" + x_twice);
+  EXPECT_CONTAINS(test::input_error_of([&] { read_mesh(dir / "x_twice.ply"); }),
+                  "its PLY header gives element 'vertex' the property 'x' twice");
   // Tabs and CRLF line ends are text: the same file with them is read.
   write_text(dir / "crlf.ply", "ply\r\nformat ascii 1.0\r\ncomment\tunit mm\r\n" + rest);
   EXPECT_EQ(read_mesh(dir / "crlf.ply").faces.size(), 1u);
