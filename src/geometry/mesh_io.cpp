@@ -34,6 +34,7 @@
 #include <bit>
 #include <cctype>
 #include <cerrno>
+#include <cstdint>
 #include <cstring>
 #include <fstream>
 #include <map>
@@ -103,62 +104,63 @@ struct PlyElement {
   std::vector<std::string> properties;
 };
 
-// ASCII PLY data is text: a NUL or another control character in it (a
-// damaged or binary body) made assimp's reader wait on the file for ever, and
-// a list count of many digits made it reserve 28 GB (both found by fuzzing).
-// So the data is walked value by value as the header lays it out (`in`
-// stands after the header, at byte `at` of `size`): each value at most 64
-// characters, each list count a whole number that the bytes after it can
-// hold (two characters a value).
-void check_ply_ascii_body(std::istream& in, const std::string& name, std::uintmax_t at, std::uintmax_t size,
+// ASCII PLY data is text, one record a line: a NUL or another control
+// character in it (a damaged or binary body) made assimp's reader wait on the
+// file for ever, and a list count of many digits made it reserve gigabytes
+// (both found by fuzzing). So the data is walked line by line as the header
+// lays it out (`in` stands after the header, at byte `at`; blank lines are
+// skipped, as assimp does): each value at most 64 characters, each list count
+// a whole number no larger than the values left on its line.
+void check_ply_ascii_body(std::istream& in, const std::string& name, std::uintmax_t at,
                           const std::vector<PlyElement>& elements) {
-  std::string token;
-  std::uintmax_t token_at = 0;
-  const auto next = [&]() {
-    token.clear();
-    for (int c; (c = in.get()) != std::char_traits<char>::eof(); ++at) {
-      const auto u = static_cast<unsigned char>(c);
-      if ((u < 0x20 && u != '\t' && u != '\n' && u != '\r') || u == 0x7f) {
-        input_error("mesh '{}': its ASCII PLY data holds a control character (byte 0x{:02x}) at byte {}, where "
-                    "ASCII data is numbers and spaces; the file is damaged, re-export the mesh",
-                    name, static_cast<unsigned>(u), at);
+  std::string line;
+  std::vector<std::pair<std::string, std::uintmax_t>> values;  // a line's values and where each starts
+  const auto next_record = [&]() {
+    for (;;) {
+      if (!bounded_getline(in, line, 1 << 20, name, "ASCII PLY data")) return false;
+      values.clear();
+      for (std::size_t i = 0; i < line.size(); ++i) {
+        const auto u = static_cast<unsigned char>(line[i]);
+        if ((u < 0x20 && u != '\t' && u != '\r') || u == 0x7f) {
+          input_error("mesh '{}': its ASCII PLY data holds a control character (byte 0x{:02x}) at byte {}, where "
+                      "ASCII data is numbers and spaces; the file is damaged, re-export the mesh",
+                      name, static_cast<unsigned>(u), at + i);
+        }
+        if (std::isspace(u)) continue;
+        if (i == 0 || std::isspace(static_cast<unsigned char>(line[i - 1]))) values.push_back({"", at + i});
+        if (values.back().first.size() == 64) {
+          input_error("mesh '{}': its ASCII PLY data holds a value of more than 64 characters at byte {}; the file "
+                      "is damaged, re-export the mesh",
+                      name, values.back().second);
+        }
+        values.back().first.push_back(line[i]);
       }
-      if (std::isspace(u)) {
-        if (token.empty()) continue;
-        ++at;
-        return true;
-      }
-      if (token.empty()) token_at = at;
-      if (token.size() == 64) {
-        input_error("mesh '{}': its ASCII PLY data holds a value of more than 64 characters at byte {}; the file is "
-                    "damaged, re-export the mesh",
-                    name, token_at);
-      }
-      token.push_back(static_cast<char>(c));
+      at += line.size() + 1;
+      if (!values.empty()) return true;
     }
-    return !token.empty();
   };
   for (const PlyElement& e : elements) {
     for (std::uintmax_t record = 0; record < e.count; ++record) {
+      if (!next_record()) return;  // fewer records than the header announces: assimp says so
+      std::size_t v = 0;
       for (const bool list : e.lists) {
-        if (!next()) return;  // fewer values than the header announces: assimp says so
+        if (v == values.size()) break;  // a short line: assimp says so
+        const auto& [count, count_at] = values[v++];
         if (!list) continue;
-        const bool whole = token.size() <= 18 && token.find_first_not_of("0123456789") == std::string::npos;
-        const std::uintmax_t n = whole ? std::stoull(token) : 0;
-        if (!whole || n > (size - std::min(size, at)) / 2) {
+        const bool whole = count.find_first_not_of("0123456789") == std::string::npos;
+        const std::uintmax_t n = !whole ? 0 : count.size() <= 18 ? std::stoull(count) : UINTMAX_MAX;
+        if (!whole || n > values.size() - v) {
           input_error("mesh '{}': {} {} starts a list with the count '{}' at byte {}, {}; the file is damaged, "
                       "re-export the mesh",
-                      name, e.name, record + 1, excerpt(token, 20), token_at,
-                      whole ? fmt::format("more values than the {} bytes after it hold", size - std::min(size, at))
+                      name, e.name, record + 1, excerpt(count, 20), count_at,
+                      whole ? fmt::format("more than the {} values left on its line", values.size() - v)
                             : std::string("not a whole number"));
         }
-        for (std::uintmax_t k = 0; k < n; ++k) {
-          if (!next()) return;
-        }
+        v += n;
       }
     }
   }
-  while (next()) {
+  while (next_record()) {
   }
 }
 
@@ -275,7 +277,7 @@ void validate_ply(const std::filesystem::path& path, std::uintmax_t size) {
                     name, elements.size(), excerpt(counts, 200),
                     need > size ? fmt::format("more than the whole file's {}", size) : std::to_string(need), body);
       }
-      if (ascii) check_ply_ascii_body(in, name, header, size, elements);
+      if (ascii) check_ply_ascii_body(in, name, header, elements);
       return;
     }
   }

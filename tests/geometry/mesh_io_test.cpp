@@ -276,13 +276,13 @@ TEST(MeshIo, PlyHeaderHoldingAControlCharacterOrNotStartingWithPlyIsRefused) {
   EXPECT_CONTAINS(test::input_error_of([&] { read_mesh(dir / "data.ply"); }),
                   "its ASCII PLY data holds a control character (byte 0x00) at byte " +
                       std::to_string(header.size() + 9));
-  // A list count of many digits made assimp reserve 28 GB
-  // (tests/fuzz/corpus/ply/oom_list_count_554bc5ee): each count is held to
-  // the bytes after it.
-  write_text(dir / "count.ply", header + "0 0 0\n1 0 0\n0 1 0\n4000000000 0 1 2\n");
+  // A list count of many digits made assimp reserve gigabytes
+  // (tests/fuzz/corpus/ply/oom_list_count_554bc5ee, oom_list_count_7becb8e7):
+  // each count is held to the values left on its line (a record a line).
+  write_text(dir / "count.ply", header + "0 0 0\n1 0 0\n\n0 1 0\n4000000000 0 1 2\n");
   EXPECT_CONTAINS(test::input_error_of([&] { read_mesh(dir / "count.ply"); }),
-                  "face 1 starts a list with the count '4000000000' at byte " + std::to_string(header.size() + 18) +
-                      ", more values than the 6 bytes after it hold");
+                  "face 1 starts a list with the count '4000000000' at byte " + std::to_string(header.size() + 19) +
+                      ", more than the 3 values left on its line");
   write_text(dir / "long.ply", header + "0 0 0\n1 0 0\n0 1 0\n3 0 1 " + std::string(70, '2') + "\n");
   EXPECT_CONTAINS(test::input_error_of([&] { read_mesh(dir / "long.ply"); }),
                   "holds a value of more than 64 characters at byte " + std::to_string(header.size() + 24));
