@@ -109,8 +109,9 @@ struct PlyElement {
 // file for ever, and a list count of many digits made it reserve gigabytes
 // (both found by fuzzing). So the data is walked line by line as the header
 // lays it out (`in` stands after the header, at byte `at`; blank lines are
-// skipped, as assimp does): each value at most 64 characters, each list count
-// a whole number no larger than the values left on its line.
+// skipped, as assimp does): as many records as the header announces, each
+// with a value for every property, each value at most 64 characters, each
+// list count a whole number no larger than the values left on its line.
 void check_ply_ascii_body(std::istream& in, const std::string& name, std::uintmax_t at,
                           const std::vector<PlyElement>& elements) {
   std::string line;
@@ -141,10 +142,20 @@ void check_ply_ascii_body(std::istream& in, const std::string& name, std::uintma
   };
   for (const PlyElement& e : elements) {
     for (std::uintmax_t record = 0; record < e.count; ++record) {
-      if (!next_record()) return;  // fewer records than the header announces: assimp says so
+      // Fewer records or values than the header announces made assimp's
+      // reader take memory without end (20 GB in a minute, found by fuzzing).
+      if (!next_record()) {
+        input_error("mesh '{}': its ASCII PLY data ends after {} of the {} {} records its header announces; the "
+                    "file is truncated or its header is wrong, re-export the mesh",
+                    name, record, e.count, e.name);
+      }
       std::size_t v = 0;
       for (const bool list : e.lists) {
-        if (v == values.size()) break;  // a short line: assimp says so
+        if (v == values.size()) {
+          input_error("mesh '{}': {} {} (the line at byte {}) holds fewer values than the {} properties its header "
+                      "gives it; the file is damaged, re-export the mesh",
+                      name, e.name, record + 1, values.front().second, e.lists.size());
+        }
         const auto& [count, count_at] = values[v++];
         if (!list) continue;
         const bool whole = count.find_first_not_of("0123456789") == std::string::npos;

@@ -283,6 +283,15 @@ TEST(MeshIo, PlyHeaderHoldingAControlCharacterOrNotStartingWithPlyIsRefused) {
   EXPECT_CONTAINS(test::input_error_of([&] { read_mesh(dir / "count.ply"); }),
                   "face 1 starts a list with the count '4000000000' at byte " + std::to_string(header.size() + 19) +
                       ", more than the 3 values left on its line");
+  // Fewer records or values than announced made assimp take 20 GB in a
+  // minute (tests/fuzz/corpus/ply/oom_records_missing_c735b2de).
+  write_text(dir / "short.ply", header + "0.000000 0.000000 0.000000\n1.000000 0 0\n");
+  EXPECT_CONTAINS(test::input_error_of([&] { read_mesh(dir / "short.ply"); }),
+                  "its ASCII PLY data ends after 2 of the 3 vertex records its header announces");
+  write_text(dir / "values.ply", header + "0 0 0\n1 0\n0 1 0\n3 0 1 2\n");
+  EXPECT_CONTAINS(test::input_error_of([&] { read_mesh(dir / "values.ply"); }),
+                  "vertex 2 (the line at byte " + std::to_string(header.size() + 6) +
+                      ") holds fewer values than the 3 properties");
   write_text(dir / "long.ply", header + "0 0 0\n1 0 0\n0 1 0\n3 0 1 " + std::string(70, '2') + "\n");
   EXPECT_CONTAINS(test::input_error_of([&] { read_mesh(dir / "long.ply"); }),
                   "holds a value of more than 64 characters at byte " + std::to_string(header.size() + 24));
