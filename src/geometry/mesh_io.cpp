@@ -277,6 +277,13 @@ void validate_ply(const std::filesystem::path& path, std::uintmax_t size) {
       current.properties.push_back(property);
       current.lists.push_back(type == "list");
     } else if (word == "end_header") {
+      // An end_header line without its line end (the file's last bytes) made
+      // assimp's reader seek on the file for ever (found by fuzzing).
+      if (in.eof()) {
+        input_error("mesh '{}': its PLY header ends the file without a line end after 'end_header' and without "
+                    "data; the file is truncated, re-export the mesh",
+                    name);
+      }
       if (open_element) add(current);
       const std::uintmax_t body = size - std::min(size, header);
       if (need > body) {

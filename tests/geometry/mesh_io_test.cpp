@@ -292,6 +292,11 @@ TEST(MeshIo, PlyHeaderHoldingAControlCharacterOrNotStartingWithPlyIsRefused) {
   EXPECT_CONTAINS(test::input_error_of([&] { read_mesh(dir / "values.ply"); }),
                   "vertex 2 (the line at byte " + std::to_string(header.size() + 6) +
                       ") holds fewer values than the 3 properties");
+  // An end_header without its line end made assimp seek for ever
+  // (tests/fuzz/corpus/ply/hang_end_header_at_eof_8d14cc83).
+  write_text(dir / "end.ply", "ply\nformat ascii 1.0\nelement vertex 0\nend_header");
+  EXPECT_CONTAINS(test::input_error_of([&] { read_mesh(dir / "end.ply"); }),
+                  "its PLY header ends the file without a line end after 'end_header'");
   write_text(dir / "long.ply", header + "0 0 0\n1 0 0\n0 1 0\n3 0 1 " + std::string(70, '2') + "\n");
   EXPECT_CONTAINS(test::input_error_of([&] { read_mesh(dir / "long.ply"); }),
                   "holds a value of more than 64 characters at byte " + std::to_string(header.size() + 24));
