@@ -297,6 +297,9 @@ TEST(MeshIo, PlyHeaderHoldingAControlCharacterOrNotStartingWithPlyIsRefused) {
   write_text(dir / "end.ply", "ply\nformat ascii 1.0\nelement vertex 0\nend_header");
   EXPECT_CONTAINS(test::input_error_of([&] { read_mesh(dir / "end.ply"); }),
                   "its PLY header ends the file without a line end after 'end_header'");
+  // Two format lines (tests/fuzz/corpus/ply/oom_format_twice_5341442b).
+  write_text(dir / "formats.ply", "ply\nformat ascii 1.0\nformat binary_little_endian 1.0\n" + rest);
+  EXPECT_CONTAINS(test::input_error_of([&] { read_mesh(dir / "formats.ply"); }), "its PLY header gives 'format' twice");
   write_text(dir / "long.ply", header + "0 0 0\n1 0 0\n0 1 0\n3 0 1 " + std::string(70, '2') + "\n");
   EXPECT_CONTAINS(test::input_error_of([&] { read_mesh(dir / "long.ply"); }),
                   "holds a value of more than 64 characters at byte " + std::to_string(header.size() + 24));
