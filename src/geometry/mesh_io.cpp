@@ -250,6 +250,12 @@ void validate_ply(const std::filesystem::path& path, std::uintmax_t size) {
       words >> current.name >> current.count;
       if (!words) input_error("mesh '{}': PLY header line '{}' is not 'element NAME COUNT'; re-export the mesh", name,
                               excerpt(line, 80));
+      // An element name of digits ("1111...vertex") made assimp ask for 80 GB
+      // (found by fuzzing): a name is a word that starts with a letter.
+      if (!std::isalpha(static_cast<unsigned char>(current.name[0])))
+        input_error("mesh '{}': PLY header line '{}' names an element '{}', which does not start with a letter; "
+                    "the file is damaged, re-export the mesh",
+                    name, excerpt(line, 80), excerpt(current.name, 40));
       // An element or a property named twice corrupted assimp's memory (found
       // by fuzzing: a heap corruption).
       for (const Element& e : elements) {

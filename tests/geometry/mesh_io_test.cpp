@@ -297,6 +297,11 @@ TEST(MeshIo, PlyHeaderHoldingAControlCharacterOrNotStartingWithPlyIsRefused) {
   write_text(dir / "end.ply", "ply\nformat ascii 1.0\nelement vertex 0\nend_header");
   EXPECT_CONTAINS(test::input_error_of([&] { read_mesh(dir / "end.ply"); }),
                   "its PLY header ends the file without a line end after 'end_header'");
+  // An element name of digits made assimp ask for 80 GB
+  // (tests/fuzz/corpus/ply/oom_element_name_digits_412762ba).
+  write_text(dir / "digits.ply", "ply\nformat ascii 1.0\nelement 1111vertex 3\n" + rest.substr(17));
+  EXPECT_CONTAINS(test::input_error_of([&] { read_mesh(dir / "digits.ply"); }),
+                  "names an element '1111vertex', which does not start with a letter");
   // Two format lines (tests/fuzz/corpus/ply/oom_format_twice_5341442b).
   write_text(dir / "formats.ply", "ply\nformat ascii 1.0\nformat binary_little_endian 1.0\n" + rest);
   EXPECT_CONTAINS(test::input_error_of([&] { read_mesh(dir / "formats.ply"); }), "its PLY header gives 'format' twice");
