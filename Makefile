@@ -49,9 +49,9 @@ fuzz: setup
 # The fast tests under AddressSanitizer and UndefinedBehaviorSanitizer, in
 # their own folder (not part of `make test`): every test but the long runs
 # (SANITIZE_SKIP: the preset runs; the golden regression and the embedded
-# index densities' grain fingerprint, whose bits belong to the release
-# build's compiler and flags).
-SANITIZE_SKIP ?= PresetRun|Golden|EmbeddedIndices.BelongToTheDefaultInputs
+# index densities' grain fingerprints (the default inputs', the bench
+# beads'), whose bits belong to the release build's compiler and flags).
+SANITIZE_SKIP ?= PresetRun|Golden|EmbeddedIndices.BelongTo
 SANITIZE_BUILD ?= build-sanitize
 test-sanitize: setup
 	cmake -S . -B $(SANITIZE_BUILD) $(CLANG_FLAGS) -DGRAINLAB_SANITIZE=ON

@@ -2,6 +2,7 @@
 #include "ct/metaimage_header.h"
 
 #include "core/bounded_line.h"
+#include "ct/compressed_data.h"
 #include "ct/declared_data.h"
 
 #include <fmt/format.h>
@@ -25,6 +26,8 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr std::size_t kMaxValue = 1024;  // a value: a few numbers, a name or a file name
+constexpr std::size_t kMaxKey = 200;     // a field's name (MetaIO's buffer holds 254 characters)
+constexpr std::size_t kMaxText = 254;    // a value that is not numbers (MetaIO's buffers hold 254 characters)
 
 constexpr std::array<std::string_view, 37> kFields{
     "Comment",         "AcquisitionDate",    "ObjectType",      "ObjectSubType",
@@ -130,6 +133,13 @@ class Header {
       return c > ' ' && c < 127;
     });
     if (!printable) fail(n, fmt::format("'{}' is not a field name", excerpt(key)), "fix or remove the line");
+    // MetaIO copies a field's name into a buffer of 255 bytes without a
+    // bound: a longer one overflowed it (found by fuzzing).
+    if (key.size() > kMaxKey) {
+      fail(n, fmt::format("a field name of {} characters ('{}'), more than the {} a MetaImage field name takes",
+                          key.size(), excerpt(key, 40), kMaxKey),
+           "shorten it or remove the line");
+    }
     if (std::find(kFields.begin(), kFields.end(), key) != kFields.end()) return;
     for (const std::string_view known : kFields) {
       if (edit_distance(lower(key), lower(known)) <= 2 && key.size() > 3) {
@@ -140,6 +150,16 @@ class Header {
   }
 
   void check_text(const std::string& key, const std::string& value, int n) const {
+    // MetaIO copies a text value (ObjectType, Name, Comment, ...) into a
+    // buffer of 255 bytes without a bound: a longer one overflowed it (found
+    // by fuzzing); numbers it parses, so lists of numbers may be longer.
+    const bool numbers = value.find_first_not_of("0123456789+-.eE \t") == std::string::npos;
+    if (!numbers && value.size() > kMaxText) {
+      fail(n, fmt::format("the value of '{}' is a text of {} characters, more than the {} a MetaImage text field "
+                          "holds",
+                          key, value.size(), kMaxText),
+           "shorten it");
+    }
     if (value.size() > kMaxValue) {
       fail(n, fmt::format("the value of '{}' has {} characters, more than the {} a MetaImage field holds", key,
                           value.size(), kMaxValue),
@@ -219,6 +239,80 @@ void check_fields(const Header& h) {
   if (h.has("HeaderSize")) whole(h, "HeaderSize", -1, INT64_MAX);
 }
 
+// ElementDataFile = LIST [D]: the slice files' names follow the header, one
+// a line, one per D-dimensional slice: the product of DimSize past its first
+// D axes (D = NDims - 1 when not given or not 1 to NDims). MetaIO took an
+// empty line for a name and read through a wild pointer (found by fuzzing:
+// exit 139), and it reads "LIST..." (any word starting so) the same way: the
+// field must be LIST and each line the name of a file.
+void check_slice_list(const Header& h, const fs::path& path, std::uint64_t header_bytes) {
+  const int at = h.line("ElementDataFile");
+  std::istringstream words(h.value("ElementDataFile"));
+  std::string list, dim_word, extra;
+  words >> list >> dim_word >> extra;
+  const auto ndims = static_cast<std::size_t>(std::atoll(h.value("NDims").c_str()));
+  const std::size_t dim = dim_word.empty() ? ndims - 1 : static_cast<std::size_t>(std::atoll(dim_word.c_str()));
+  if (list != "LIST" || !extra.empty() ||
+      (!dim_word.empty() && dim_word.find_first_not_of("0123456789") != std::string::npos)) {
+    h.fail(at, fmt::format("'ElementDataFile = {}' starts with LIST, which MetaIO reads as a list of slice files, "
+                           "but is not 'LIST' or 'LIST D' (D: the slices' dimension)",
+                           excerpt(h.value("ElementDataFile"))),
+           "write 'ElementDataFile = LIST' followed by the slice files' names, one a line, or rename the data file");
+  }
+  const std::vector<double> sizes = h.numbers("DimSize", ndims, Header::Kind::PositiveWhole);
+  double files = 1;
+  for (std::size_t d = (dim >= 1 && dim <= ndims) ? dim : ndims - 1; d < ndims; ++d) files *= sizes[d];
+  if (files > 1e6) h.fail(at, fmt::format("a list of {:.3g} slice files", files), "join the slices into one file");
+  std::ifstream in(path, std::ios::binary);
+  in.seekg(static_cast<std::streamoff>(header_bytes));
+  std::string name;
+  for (int k = 1; k <= static_cast<int>(files); ++k) {
+    const bool got = static_cast<bool>(bounded_getline(in, name, kMaxText, path.string(), "a MetaImage slice list"));
+    name = trim(name);
+    const bool printable = std::all_of(name.begin(), name.end(), [](char c) {
+      return static_cast<unsigned char>(c) >= ' ' && c != 127;
+    });
+    std::error_code ec;
+    const fs::path file = fs::path(name).is_absolute() ? fs::path(name) : path.parent_path() / name;
+    if (!got || name.empty() || !printable || !fs::is_regular_file(file, ec)) {
+      h.fail(at + k, fmt::format("slice file {} of the {} that 'ElementDataFile = LIST' and DimSize call for {}", k,
+                                 static_cast<std::uint64_t>(files),
+                                 !got            ? "is missing (the file ends)"
+                                 : name.empty()  ? "is an empty line"
+                                 : !printable    ? "holds a control character"
+                                                 : fmt::format("'{}' does not exist or is not a regular file",
+                                                               excerpt(file.string(), 200))),
+             "list one slice file a line after the header, each next to the header or by its full path");
+    }
+  }
+}
+
+// ElementDataFile = PATTERN MIN MAX STEP [D]: MetaIO formats each slice's name
+// with PATTERN as a printf format, so PATTERN must hold one whole-number
+// conversion (%d, %03d) and nothing else a printf reads ("%s" would read
+// through a wild pointer).
+void check_slice_pattern(const Header& h) {
+  const int at = h.line("ElementDataFile");
+  std::istringstream words(h.value("ElementDataFile"));
+  std::string pattern;
+  words >> pattern;
+  std::vector<std::string> numbers;
+  for (std::string w; words >> w;) numbers.push_back(w);
+  const auto percent = pattern.find('%');
+  std::size_t i = percent + 1;
+  while (i < pattern.size() && std::isdigit(static_cast<unsigned char>(pattern[i]))) ++i;
+  const bool one_d = i < pattern.size() && pattern[i] == 'd' && pattern.find('%', i) == std::string::npos;
+  const bool whole = std::all_of(numbers.begin(), numbers.end(), [](const std::string& w) {
+    return !w.empty() && w.size() < 10 && w.find_first_not_of("0123456789-+", 0) == std::string::npos;
+  });
+  if (!one_d || !whole || numbers.size() < 3 || numbers.size() > 4) {
+    h.fail(at, fmt::format("'ElementDataFile = {}' is not a slice pattern 'NAME%03d.raw MIN MAX STEP' (one %d "
+                           "conversion and three or four whole numbers)",
+                           excerpt(h.value("ElementDataFile"))),
+           "write the pattern so, LOCAL, or the data file's name (without '%')");
+  }
+}
+
 }  // namespace
 
 void check_metaimage_header(const fs::path& path) {
@@ -226,7 +320,8 @@ void check_metaimage_header(const fs::path& path) {
   const std::uint64_t header_bytes = h.read();
   check_fields(h);
   const std::string& data_file = h.value("ElementDataFile");
-  if (data_file.rfind("LIST", 0) == 0 || data_file.find('%') != std::string::npos) return;  // slice files: MetaIO's
+  if (data_file.rfind("LIST", 0) == 0) return check_slice_list(h, path, header_bytes);
+  if (data_file.find('%') != std::string::npos) return check_slice_pattern(h);  // the slices: MetaIO's
   fs::path data = path;
   if (data_file != "LOCAL") {
     data = fs::path(data_file).is_absolute() ? fs::path(data_file) : path.parent_path() / data_file;
@@ -240,11 +335,26 @@ void check_metaimage_header(const fs::path& path) {
   }
   const bool compressed = is_true(h.value("CompressedData"));
   const bool binary = !h.has("BinaryData") || is_true(h.value("BinaryData"));
-  if (compressed || !binary) return;  // MetaIO reads compressed and ASCII data by their own lengths
   const int bytes = element_bytes(h.value("ElementType"));
   std::uint64_t need = declared_bytes(h.value("DimSize"), bytes);
   const std::string& channels = h.value("ElementNumberOfChannels");
   if (!channels.empty()) need *= static_cast<std::uint64_t>(std::atoll(channels.c_str()));
+  if (compressed) {
+    // MetaIO inflated until the image was full, for ever when the stream
+    // broke or ended first (compressed_data.h).
+    const std::uint64_t size = h.has("CompressedDataSize") ? std::atoll(h.value("CompressedDataSize").c_str()) : 0;
+    const InflatedPrefix got = inflate_prefix(data, data_file == "LOCAL" ? header_bytes : 0, size, need);
+    if (got.produced < need) {
+      h.fail(h.line("ElementDataFile"),
+             fmt::format("its compressed data {} after {} of the {} bytes that 'DimSize = {}' of 'ElementType = {}' "
+                         "call for",
+                         got.error.empty() ? "ends" : "is broken (zlib: " + excerpt(got.error, 80) + ")", got.produced,
+                         need, h.value("DimSize"), h.value("ElementType")),
+             "copy the file again, or fix DimSize and ElementType");
+    }
+    return;
+  }
+  if (!binary) return;  // MetaIO reads ASCII data by its own lengths
   DeclaredData d{path, "MetaImage",
                  fmt::format("'DimSize = {}' of 'ElementType = {}'{}", h.value("DimSize"), h.value("ElementType"),
                              channels.empty() ? "" : fmt::format(" x {} channels", channels)),

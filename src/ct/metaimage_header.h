@@ -13,9 +13,13 @@
 //   CompressedDataSize, HeaderSize  whole numbers (HeaderSize -1: the data
 //              is the end of its file)
 //   ElementDataFile  the last field (the data follows it): LOCAL (the data is
-//              in this file), a data file next to the header that exists, or
-//              a LIST or %-pattern of slice files (left to MetaIO)
-// Values are printable text of at most 1024 characters. Then uncompressed
+//              in this file), a data file next to the header that exists,
+//              LIST [D] followed by the names of slice files that exist, one
+//              a line (as many as DimSize's axes past the first D make), or
+//              a pattern 'NAME%03d.raw MIN MAX STEP [D]' of one %d conversion
+// Values are printable text of at most 1024 characters (254 unless they are
+// numbers), field names of at most 200 (MetaIO copies text and names into
+// buffers of 255 bytes unchecked). Then uncompressed
 // binary data must hold exactly DimSize x channels x ElementType's bytes
 // (declared_data.h). Fields of other names (ITK writes an image's own
 // metadata as extra fields) are allowed when printable.

@@ -21,6 +21,7 @@ namespace {
 
 constexpr std::size_t kMaxHeaderLine = 64 * 1024;  // a header line: a field and a few numbers or a file name
 constexpr std::size_t kMaxFieldLine = 900;         // a field's line ("name: value"): what teem's messages take
+constexpr std::uint64_t kMaxAsciiValue = 1000;     // an ASCII value's characters: teem's buffer holds 1024
 
 // deflate (gzip) turns one byte into at most 1032 (its longest match, 258
 // bytes, costs at least 2 bits): a bound on what compressed data can hold.
@@ -239,8 +240,41 @@ void check_encoded_data_size(const NrrdHeader& h, const fs::path& path, const st
               path.string(), encoding, excerpt(field(h, "sizes")), excerpt(field(h, "type")), need, least, why, have);
 }
 
+// teem reads each value of ASCII data with fscanf("%s") into a buffer of 1025
+// characters on its stack, without a bound: a longer run of characters
+// without a space overflowed it (found by fuzzing; release: `*** stack
+// smashing detected ***`, exit 134). A number takes some 30 characters, so a
+// run over kMaxAsciiValue is refused before ITK sees the file.
+void check_ascii_values(const NrrdHeader& h, const fs::path& path) {
+  const std::string data_file = field(h, "datafile");
+  if (data_file.rfind("LIST", 0) == 0 || data_file.find('%') != std::string::npos) return;  // several files
+  const fs::path data = data_file.empty() ? path
+                        : fs::path(data_file).is_absolute() ? fs::path(data_file)
+                                                            : path.parent_path() / data_file;
+  std::ifstream in(data, std::ios::binary);
+  if (!in) return;  // ITK names a missing data file
+  std::uint64_t at = data_file.empty() ? h.header_bytes : 0;
+  in.seekg(static_cast<std::streamoff>(at));
+  std::uint64_t run = 0;
+  std::array<char, 65536> buffer{};
+  while (in) {
+    in.read(buffer.data(), buffer.size());
+    const auto got = static_cast<std::size_t>(in.gcount());
+    for (std::size_t i = 0; i < got; ++i, ++at) {
+      run = std::isspace(static_cast<unsigned char>(buffer[i])) ? 0 : run + 1;
+      if (run > kMaxAsciiValue) {
+        input_error("'{}' (NRRD, ascii encoding): its data holds {} characters without a space at byte {}, where "
+                    "each value is a number of a few characters (ITK's NRRD reader overflows on a value of more "
+                    "than 1024); the data is damaged or not ASCII: export the scan again",
+                    data.string(), run, at + 1 - run);
+      }
+    }
+  }
+}
+
 void check_nrrd_data_size(const NrrdHeader& h, const fs::path& path) {
   if (const std::string encoding = lower(field(h, "encoding")); encoding != "raw") {
+    if (encoding == "ascii" || encoding == "text" || encoding == "txt") check_ascii_values(h, path);
     check_encoded_data_size(h, path, encoding);
     return;
   }

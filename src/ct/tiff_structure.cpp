@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <fstream>
@@ -23,7 +24,8 @@ constexpr std::uint64_t kMaxSide = 1u << 20;
 constexpr std::uint64_t kMaxEntries = 4096;
 
 enum Tag : std::uint16_t {
-  kWidth = 256, kLength = 257, kBitsPerSample = 258, kCompression = 259, kStripOffsets = 273,
+  kNewSubfileType = 254, kSubfileType = 255, kWidth = 256, kLength = 257, kBitsPerSample = 258, kCompression = 259,
+  kStripOffsets = 273,
   kSamplesPerPixel = 277, kRowsPerStrip = 278, kStripByteCounts = 279, kPlanar = 284, kDateTime = 306,
   kTileWidth = 322, kTileLength = 323, kTileOffsets = 324, kTileByteCounts = 325
 };
@@ -124,6 +126,7 @@ class TiffWalk {
       if (entry.at > size_ || bytes > size_ - entry.at) {
         fail("the {} bytes of tag {} at byte {} lie past the file's end ({} bytes)", bytes, tag, entry.at, size_);
       }
+      if (entry.type == 2) check_text_ends(tag, entry);
       if (tag == kDateTime) check_date_time(entry);
       if (!entries.emplace(tag, entry).second) fail("tag {} appears twice in one directory", tag);
     }
@@ -131,15 +134,30 @@ class TiffWalk {
     return big_ ? u64(next) : u32(next);
   }
 
+  // TIFF text (type 2) ends with a NUL. libtiff keeps the bytes of a tag it
+  // does not know as they are, and ITK measured them with strlen: a text
+  // without its NUL made it read past libtiff's buffer (found by fuzzing).
+  void check_text_ends(std::uint16_t tag, const Entry& e) {
+    std::uint8_t last = 1;
+    if (e.count > 0) read(e.at + e.count - 1, &last, 1);
+    if (last != 0) {
+      fail("tag {} is text (type 2) of {} bytes that does not end with a NUL, as TIFF text must", tag, e.count);
+    }
+  }
+
   // ITK copies DateTime's 20 bytes ("YYYY:MM:DD HH:MM:SS" and a NUL, as TIFF
-  // fixes it) out of what libtiff read: the count, and one NUL more when the
-  // last is not one. Fewer made ITK read past libtiff's buffer.
+  // fixes it) out of what libtiff keeps: the text up to its first NUL, and a
+  // NUL. Fewer made ITK read past libtiff's buffer (found by fuzzing: a short
+  // count, then a long count whose first byte is a NUL).
   void check_date_time(const Entry& e) {
-    std::uint8_t last = 0;
-    if (e.type == 2 && e.count > 0) read(e.at + e.count - 1, &last, 1);
-    const std::uint64_t held = e.count + (last != 0 ? 1 : 0);
+    std::array<std::uint8_t, 20> text{};
+    const std::uint64_t n = e.type == 2 ? std::min<std::uint64_t>(e.count, text.size()) : 0;
+    read(e.at, text.data(), n);
+    std::uint64_t chars = 0;
+    while (chars < n && text[chars] != 0) ++chars;
+    const std::uint64_t held = chars + 1;
     if (e.type != 2 || held < 20) {
-      fail("its DateTime (tag 306) holds {} characters (type {}), fewer than the 20 TIFF fixes "
+      fail("its DateTime (tag 306) holds {} characters up to its first NUL (type {}), fewer than the 20 TIFF fixes "
            "('YYYY:MM:DD HH:MM:SS' and a NUL)", e.type == 2 ? held : 0, e.type);
     }
   }
@@ -169,6 +187,43 @@ class TiffWalk {
     if (v.empty()) fail("its {} (tag {}) holds no value", name, tag);
     if (v[0] < lowest || v[0] > highest) fail("its {} (tag {}) is {}, outside {} to {}", name, tag, v[0], lowest, highest);
     return v[0];
+  }
+
+  // ITK reads a file of several pages as a volume: it sizes the image from
+  // the first page and the number of full-resolution pages (NewSubfileType 0),
+  // then writes every page not marked reduced or mask at its page number. A
+  // page of another size, or pages of mixed kinds (a full page after a
+  // reduced one, kinds 0 and 2 mixed, an old SubfileType on some), made it
+  // write past the image (found by fuzzing: a heap overflow in
+  // TIFFImageIO::ReadGenericImage). So every page must be the first page's
+  // size and of its kind: the slices of one scan.
+  struct Page {
+    std::uint64_t width, length, samples, bits;
+  };
+  void check_like_the_first_page(const std::map<std::uint16_t, Entry>& entries, const Page& page) {
+    const auto kind = [&](std::uint16_t tag) {
+      return entries.count(tag) ? fmt::format("{} = {}", tag, single(entries, tag, "SubfileType", 0, 0, UINT64_MAX))
+                                : std::string();
+    };
+    const bool both = entries.count(kSubfileType) && entries.count(kNewSubfileType);
+    std::string kinds = kind(kNewSubfileType) + (both ? ", " : "") + kind(kSubfileType);
+    if (kinds.empty()) kinds = "no subfile type";
+    if (page_ == 0) {
+      first_ = page;
+      first_kinds_ = kinds;
+      return;
+    }
+    if (page.width != first_.width || page.length != first_.length || page.samples != first_.samples ||
+        page.bits != first_.bits) {
+      fail("it is {} x {} pixels of {} sample(s) of {} bits, where page 1 is {} x {} of {} of {}: the slices of a "
+           "volume are all one size",
+           page.width, page.length, page.samples, page.bits, first_.width, first_.length, first_.samples, first_.bits);
+    }
+    if (kinds != first_kinds_) {
+      fail("its subfile type (tags 254, 255) is '{}', where page 1's is '{}': a volume's pages are all slices of one "
+           "kind (ITK reads mixed kinds past its image); keep only the scan's slices",
+           kinds, first_kinds_);
+    }
   }
 
   std::uint64_t check_page(std::uint64_t ifd) {
@@ -215,6 +270,7 @@ class TiffWalk {
       fail("{} {} offsets and {} byte counts, where a {} x {} image of these {} needs {}", tiled ? "its" : "its",
            offsets.size(), counts.size(), width, length, tiled ? "tiles" : "strips", blocks);
     }
+    check_like_the_first_page(entries, {width, length, samples, bits});
     const std::uint64_t row_bytes = (block_width * pixel_bits + 7) / 8;
     for (std::uint64_t i = 0; i < blocks; ++i) {
       if (offsets[i] > size_ || counts[i] > size_ - offsets[i]) {
@@ -236,6 +292,8 @@ class TiffWalk {
   bool little_ = true;
   bool big_ = false;
   std::int64_t page_ = -1;
+  Page first_{};
+  std::string first_kinds_;
 };
 
 }  // namespace

@@ -30,9 +30,11 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cctype>
 #include <cerrno>
+#include <cstdint>
 #include <cstring>
 #include <fstream>
 #include <map>
@@ -93,6 +95,86 @@ std::uintmax_t ply_type_size(std::string_view t) {
   return 0;
 }
 
+// An element of a PLY header: its name and count, the least bytes one record
+// takes, which of its properties are lists, and their names.
+struct PlyElement {
+  std::string name;
+  std::uintmax_t count = 0, min_bytes = 0;
+  std::vector<bool> lists;
+  std::vector<std::string> properties;
+};
+
+// ASCII PLY data is text, one record a line: a NUL or another control
+// character in it (a damaged or binary body) made assimp's reader wait on the
+// file for ever, and a list count of many digits made it reserve gigabytes
+// (both found by fuzzing). So the data is walked line by line as the header
+// lays it out (`in` stands after the header, at byte `at`; blank lines are
+// skipped, as assimp does): as many records as the header announces, each
+// with a value for every property, each value at most 64 characters, each
+// list count a whole number no larger than the values left on its line.
+void check_ply_ascii_body(std::istream& in, const std::string& name, std::uintmax_t at,
+                          const std::vector<PlyElement>& elements) {
+  std::string line;
+  std::vector<std::pair<std::string, std::uintmax_t>> values;  // a line's values and where each starts
+  const auto next_record = [&]() {
+    for (;;) {
+      if (!bounded_getline(in, line, 1 << 20, name, "ASCII PLY data")) return false;
+      values.clear();
+      for (std::size_t i = 0; i < line.size(); ++i) {
+        const auto u = static_cast<unsigned char>(line[i]);
+        if ((u < 0x20 && u != '\t' && u != '\r') || u == 0x7f) {
+          input_error("mesh '{}': its ASCII PLY data holds a control character (byte 0x{:02x}) at byte {}, where "
+                      "ASCII data is numbers and spaces; the file is damaged, re-export the mesh",
+                      name, static_cast<unsigned>(u), at + i);
+        }
+        if (std::isspace(u)) continue;
+        if (i == 0 || std::isspace(static_cast<unsigned char>(line[i - 1]))) values.push_back({"", at + i});
+        if (values.back().first.size() == 64) {
+          input_error("mesh '{}': its ASCII PLY data holds a value of more than 64 characters at byte {}; the file "
+                      "is damaged, re-export the mesh",
+                      name, values.back().second);
+        }
+        values.back().first.push_back(line[i]);
+      }
+      at += line.size() + 1;
+      if (!values.empty()) return true;
+    }
+  };
+  for (const PlyElement& e : elements) {
+    for (std::uintmax_t record = 0; record < e.count; ++record) {
+      // Fewer records or values than the header announces made assimp's
+      // reader take memory without end (20 GB in a minute, found by fuzzing).
+      if (!next_record()) {
+        input_error("mesh '{}': its ASCII PLY data ends after {} of the {} {} records its header announces; the "
+                    "file is truncated or its header is wrong, re-export the mesh",
+                    name, record, e.count, e.name);
+      }
+      std::size_t v = 0;
+      for (const bool list : e.lists) {
+        if (v == values.size()) {
+          input_error("mesh '{}': {} {} (the line at byte {}) holds fewer values than the {} properties its header "
+                      "gives it; the file is damaged, re-export the mesh",
+                      name, e.name, record + 1, values.front().second, e.lists.size());
+        }
+        const auto& [count, count_at] = values[v++];
+        if (!list) continue;
+        const bool whole = count.find_first_not_of("0123456789") == std::string::npos;
+        const std::uintmax_t n = !whole ? 0 : count.size() <= 18 ? std::stoull(count) : UINTMAX_MAX;
+        if (!whole || n > values.size() - v) {
+          input_error("mesh '{}': {} {} starts a list with the count '{}' at byte {}, {}; the file is damaged, "
+                      "re-export the mesh",
+                      name, e.name, record + 1, excerpt(count, 20), count_at,
+                      whole ? fmt::format("more than the {} values left on its line", values.size() - v)
+                            : std::string("not a whole number"));
+        }
+        v += n;
+      }
+    }
+  }
+  while (next_record()) {
+  }
+}
+
 // Refuses a PLY whose header announces more elements than the file can hold.
 void validate_ply(const std::filesystem::path& path, std::uintmax_t size) {
   const std::string name = path.string();
@@ -100,10 +182,7 @@ void validate_ply(const std::filesystem::path& path, std::uintmax_t size) {
   std::string line;
   bool ascii = true;
   std::uintmax_t header = 0, need = 0;
-  struct Element {
-    std::string name;
-    std::uintmax_t count = 0, min_bytes = 0;
-  };
+  using Element = PlyElement;
   std::vector<Element> elements;
   const auto add = [&](const Element& e) {
     const std::uintmax_t per = std::max<std::uintmax_t>(e.min_bytes, 1);  // no property: still refuse absurd counts
@@ -112,18 +191,46 @@ void validate_ply(const std::filesystem::path& path, std::uintmax_t size) {
     elements.push_back(e);
   };
   Element current;
-  bool open_element = false, first_line = true;
+  bool open_element = false, first_line = true, format_seen = false;
   while (header < 65536 && bounded_getline(in, line, 65536, name, "a PLY header")) {
+    const std::uintmax_t line_start = header;
     header += line.size() + 1;
     if (!line.empty() && line.back() == '\r') line.pop_back();
+    // A NUL or other control character in the header (a binary file named
+    // .ply, or a damaged header) made assimp's reader, which takes a NUL for
+    // the end of a line, wait on the file forever (found by fuzzing).
+    const auto control = std::find_if(line.begin(), line.end(), [](char c) {
+      const auto u = static_cast<unsigned char>(c);
+      return (u < 0x20 && c != '\t') || u == 0x7f;
+    });
+    if (control != line.end()) {
+      input_error("mesh '{}': its PLY header holds a control character (byte 0x{:02x}) at byte {}, where a PLY "
+                  "header is text; the file is damaged or not a PLY file, re-export the mesh",
+                  name, static_cast<unsigned>(static_cast<unsigned char>(*control)),
+                  line_start + static_cast<std::uintmax_t>(control - line.begin()));
+    }
     std::istringstream words(line);
     std::string word;
     words >> word;
-    // Not a PLY file at all (no "ply" first): assimp says it cannot parse it.
-    if (std::exchange(first_line, false) && word != "ply") return;
+    // A PLY file starts with the line "ply". assimp's reader took other first
+    // lines ("plyply") and waited on the file for ever (found by fuzzing), so
+    // only a header checked whole to its end_header reaches it.
+    if (std::exchange(first_line, false)) {
+      std::string more;
+      if (word != "ply" || words >> more) {
+        input_error("mesh '{}': its first line is '{}', where a PLY file starts with the line 'ply'; the file is "
+                    "damaged or not a PLY file, re-export the mesh",
+                    name, excerpt(line, 40));
+      }
+      continue;
+    }
     // A header line of no PLY keyword, or an unknown format, made assimp's
     // reader loop for minutes (found by fuzzing): refused here.
     if (word == "format") {
+      // A second format line made grainlab and assimp read the data in two
+      // ways (assimp took 9 GB, found by fuzzing).
+      if (std::exchange(format_seen, true))
+        input_error("mesh '{}': its PLY header gives 'format' twice; the file is damaged, re-export the mesh", name);
       std::string f;
       words >> f;
       if (f != "ascii" && f != "binary_little_endian" && f != "binary_big_endian")
@@ -143,6 +250,20 @@ void validate_ply(const std::filesystem::path& path, std::uintmax_t size) {
       words >> current.name >> current.count;
       if (!words) input_error("mesh '{}': PLY header line '{}' is not 'element NAME COUNT'; re-export the mesh", name,
                               excerpt(line, 80));
+      // An element name of digits ("1111...vertex") made assimp ask for 80 GB
+      // (found by fuzzing): a name is a word that starts with a letter.
+      if (!std::isalpha(static_cast<unsigned char>(current.name[0])))
+        input_error("mesh '{}': PLY header line '{}' names an element '{}', which does not start with a letter; "
+                    "the file is damaged, re-export the mesh",
+                    name, excerpt(line, 80), excerpt(current.name, 40));
+      // An element or a property named twice corrupted assimp's memory (found
+      // by fuzzing: a heap corruption).
+      for (const Element& e : elements) {
+        if (e.name == current.name)
+          input_error("mesh '{}': its PLY header announces the element '{}' twice; the file is damaged, re-export the "
+                      "mesh",
+                      name, excerpt(current.name, 40));
+      }
     } else if (word == "property") {
       // A property of an unknown type, or none, made assimp's binary reader
       // read out of bounds (found by fuzzing): each is 'property TYPE NAME' or
@@ -159,7 +280,20 @@ void validate_ply(const std::filesystem::path& path, std::uintmax_t size) {
                     "after an 'element' line; the file is damaged, re-export the mesh",
                     name, excerpt(line, 80));
       current.min_bytes += ascii ? 2 : ply_type_size(type == "list" ? count_type : type);
+      if (std::find(current.properties.begin(), current.properties.end(), property) != current.properties.end())
+        input_error("mesh '{}': its PLY header gives element '{}' the property '{}' twice; the file is damaged, "
+                    "re-export the mesh",
+                    name, excerpt(current.name, 40), excerpt(property, 40));
+      current.properties.push_back(property);
+      current.lists.push_back(type == "list");
     } else if (word == "end_header") {
+      // An end_header line without its line end (the file's last bytes) made
+      // assimp's reader seek on the file for ever (found by fuzzing).
+      if (in.eof()) {
+        input_error("mesh '{}': its PLY header ends the file without a line end after 'end_header' and without "
+                    "data; the file is truncated, re-export the mesh",
+                    name);
+      }
       if (open_element) add(current);
       const std::uintmax_t body = size - std::min(size, header);
       if (need > body) {
@@ -171,6 +305,7 @@ void validate_ply(const std::filesystem::path& path, std::uintmax_t size) {
                     name, elements.size(), excerpt(counts, 200),
                     need > size ? fmt::format("more than the whole file's {}", size) : std::to_string(need), body);
       }
+      if (ascii) check_ply_ascii_body(in, name, header, elements);
       return;
     }
   }

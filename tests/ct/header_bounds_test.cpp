@@ -116,5 +116,25 @@ TEST_F(CtHeaderBounds, AMalformedSpaceVectorIsRefusedBeforeTeemParsesIt) {
   EXPECT_EQ(refusal(good), "");
 }
 
+// ASCII data holding a run of over 1024 characters without a space
+// overflowed teem's value buffer on its stack (found by fuzzing:
+// tests/fuzz/corpus/nrrd/crash_ascii_value_038a0762), in the file or in a
+// detached data file; values of ordinary length are read.
+TEST_F(CtHeaderBounds, AnAsciiNrrdValueLongerThanTeemsBufferIsRefused) {
+  const std::string head = nrrd_header("4 4 4", "float", "ascii");
+  const std::string msg = refusal(write("run.nrrd", head + "0.0 0.5 " + std::string(1200, '3') + " " + ascii_values()));
+  EXPECT_NE(msg.find("its data holds 1001 characters without a space at byte " + std::to_string(head.size() + 8)),
+            std::string::npos)
+      << msg;
+  write("values.txt", "1 2 " + std::string(1500, '7'));
+  const std::string detached = refusal(write("detached.nhdr", "NRRD0004\ntype: float\ndimension: 3\nsizes: 4 4 4\n"
+                                                              "encoding: ascii\ndata file: values.txt\n\n"));
+  EXPECT_NE(detached.find("values.txt' (NRRD, ascii encoding): its data holds 1001 characters without a space at "
+                          "byte 4"),
+            std::string::npos)
+      << detached;
+  EXPECT_EQ(refusal(write("fine.nrrd", head + std::string(1000, '1') + " " + ascii_values())), "");
+}
+
 }  // namespace
 }  // namespace grainlab::ct

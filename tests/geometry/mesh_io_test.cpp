@@ -161,8 +161,8 @@ TEST(MeshIo, GarbageRefused) {
   test::TempDir dir;
   write_text(dir / "junk.ply", "this is not a ply file\n");
   const std::string msg = test::input_error_of([&] { read_mesh(dir / "junk.ply"); });
-  EXPECT_CONTAINS(msg, "junk.ply");
-  EXPECT_CONTAINS(msg, "cannot be parsed");
+  EXPECT_CONTAINS(msg, "mesh '" + (dir / "junk.ply").string() + "': its first line is 'this is not a ply file', where "
+                       "a PLY file starts with the line 'ply'");
 }
 
 // A PLY header may announce any count; assimp reserved memory for it (a
@@ -248,6 +248,79 @@ TEST(MeshIo, PlyHeaderOfAnUnknownFormatOrKeywordIsRefused) {
   write_text(dir / "keyword.ply", "ply\nformat ascii 1.0\nelemert vertex 3\n" + rest);
   EXPECT_CONTAINS(test::input_error_of([&] { read_mesh(dir / "keyword.ply"); }),
                   "PLY header line 'elemert vertex 3' starts with no PLY keyword");
+}
+
+// A PLY header holding a NUL (a binary first line "ply\0...") made assimp's
+// reader wait on the file forever (found by fuzzing:
+// tests/fuzz/corpus/ply/hang_nul_in_header_8182730c): refused at its byte.
+TEST(MeshIo, PlyHeaderHoldingAControlCharacterOrNotStartingWithPlyIsRefused) {
+  test::TempDir dir;
+  const std::string rest = "element vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                           "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                           "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  write_text(dir / "nul.ply", "ply" + std::string(2, '\0') + "\xdd\nformat ascii 1.0\n" + rest);
+  EXPECT_CONTAINS(test::input_error_of([&] { read_mesh(dir / "nul.ply"); }),
+                  "its PLY header holds a control character (byte 0x00) at byte 3");
+  // A first line other than "ply" made assimp wait the same way
+  // (tests/fuzz/corpus/ply/hang_first_line_plyply_ab1de0a2).
+  write_text(dir / "plyply.ply", "plyply\nformat ascii 1.0\ncomment unit \nfocurbe ");
+  EXPECT_CONTAINS(test::input_error_of([&] { read_mesh(dir / "plyply.ply"); }),
+                  "its first line is 'plyply', where a PLY file starts with the line 'ply'");
+  write_text(dir / "bell.ply", "ply\nformat ascii 1.0\ncomment unit \a mm\n" + rest);
+  EXPECT_CONTAINS(test::input_error_of([&] { read_mesh(dir / "bell.ply"); }),
+                  "control character (byte 0x07) at byte 34");
+  // ASCII data is text too: a NUL in it made assimp wait the same way
+  // (tests/fuzz/corpus/ply/hang_nul_in_ascii_data_80cc5b86).
+  const std::string header = "ply\nformat ascii 1.0\n" + rest.substr(0, rest.find("0 0 0"));
+  write_text(dir / "data.ply", header + "0 0 0\n1 0" + std::string(1, '\0') + " 0\n0 1 0\n3 0 1 2\n");
+  EXPECT_CONTAINS(test::input_error_of([&] { read_mesh(dir / "data.ply"); }),
+                  "its ASCII PLY data holds a control character (byte 0x00) at byte " +
+                      std::to_string(header.size() + 9));
+  // A list count of many digits made assimp reserve gigabytes
+  // (tests/fuzz/corpus/ply/oom_list_count_554bc5ee, oom_list_count_7becb8e7):
+  // each count is held to the values left on its line (a record a line).
+  write_text(dir / "count.ply", header + "0 0 0\n1 0 0\n\n0 1 0\n4000000000 0 1 2\n");
+  EXPECT_CONTAINS(test::input_error_of([&] { read_mesh(dir / "count.ply"); }),
+                  "face 1 starts a list with the count '4000000000' at byte " + std::to_string(header.size() + 19) +
+                      ", more than the 3 values left on its line");
+  // Fewer records or values than announced made assimp take 20 GB in a
+  // minute (tests/fuzz/corpus/ply/oom_records_missing_c735b2de).
+  write_text(dir / "short.ply", header + "0.000000 0.000000 0.000000\n1.000000 0 0\n");
+  EXPECT_CONTAINS(test::input_error_of([&] { read_mesh(dir / "short.ply"); }),
+                  "its ASCII PLY data ends after 2 of the 3 vertex records its header announces");
+  write_text(dir / "values.ply", header + "0 0 0\n1 0\n0 1 0\n3 0 1 2\n");
+  EXPECT_CONTAINS(test::input_error_of([&] { read_mesh(dir / "values.ply"); }),
+                  "vertex 2 (the line at byte " + std::to_string(header.size() + 6) +
+                      ") holds fewer values than the 3 properties");
+  // An end_header without its line end made assimp seek for ever
+  // (tests/fuzz/corpus/ply/hang_end_header_at_eof_8d14cc83).
+  write_text(dir / "end.ply", "ply\nformat ascii 1.0\nelement vertex 0\nend_header");
+  EXPECT_CONTAINS(test::input_error_of([&] { read_mesh(dir / "end.ply"); }),
+                  "its PLY header ends the file without a line end after 'end_header'");
+  // An element name of digits made assimp ask for 80 GB
+  // (tests/fuzz/corpus/ply/oom_element_name_digits_412762ba).
+  write_text(dir / "digits.ply", "ply\nformat ascii 1.0\nelement 1111vertex 3\n" + rest.substr(17));
+  EXPECT_CONTAINS(test::input_error_of([&] { read_mesh(dir / "digits.ply"); }),
+                  "names an element '1111vertex', which does not start with a letter");
+  // Two format lines (tests/fuzz/corpus/ply/oom_format_twice_5341442b).
+  write_text(dir / "formats.ply", "ply\nformat ascii 1.0\nformat binary_little_endian 1.0\n" + rest);
+  EXPECT_CONTAINS(test::input_error_of([&] { read_mesh(dir / "formats.ply"); }), "its PLY header gives 'format' twice");
+  write_text(dir / "long.ply", header + "0 0 0\n1 0 0\n0 1 0\n3 0 1 " + std::string(70, '2') + "\n");
+  EXPECT_CONTAINS(test::input_error_of([&] { read_mesh(dir / "long.ply"); }),
+                  "holds a value of more than 64 characters at byte " + std::to_string(header.size() + 24));
+  // An element or a property named twice corrupted assimp's memory
+  // (tests/fuzz/corpus/ply/heap_corruption_element_twice_0148e63a).
+  write_text(dir / "twice.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n" + rest);
+  EXPECT_CONTAINS(test::input_error_of([&] { read_mesh(dir / "twice.ply"); }),
+                  "its PLY header announces the element 'vertex' twice");
+  std::string x_twice = rest;
+  x_twice.replace(x_twice.find("property float y"), 16, "property float x");
+  write_text(dir / "x_twice.ply", "ply\nformat ascii 1.0\n" + x_twice);
+  EXPECT_CONTAINS(test::input_error_of([&] { read_mesh(dir / "x_twice.ply"); }),
+                  "its PLY header gives element 'vertex' the property 'x' twice");
+  // Tabs and CRLF line ends are text: the same file with them is read.
+  write_text(dir / "crlf.ply", "ply\r\nformat ascii 1.0\r\ncomment\tunit mm\r\n" + rest);
+  EXPECT_EQ(read_mesh(dir / "crlf.ply").faces.size(), 1u);
 }
 
 // A device or a pipe named like a mesh is refused before anything reads it.
