@@ -140,11 +140,13 @@ void write_slice_as(const std::string& path, std::int64_t nx, std::int64_t ny, c
 }
 
 // grainlab's own strict reading of the structures ITK's MetaImage and TIFF
-// readers trust (a malformed header made them read past their buffers).
-void check_before_itk(const std::string& path) {
+// readers trust (a malformed header made them read past their buffers);
+// `voxels`: before the voxels are read (a MetaImage's compressed data is
+// inflated then, not when only its header is read).
+void check_before_itk(const std::string& path, bool voxels) {
   const std::string f = format_for(path);
   if (f == "TIFF") check_tiff_structure(path);
-  if (f == "MetaImage") check_metaimage_header(path);
+  if (f == "MetaImage") check_metaimage_header(path, voxels);
 }
 
 }  // namespace
@@ -159,7 +161,7 @@ std::string format_for(const std::string& path) {
 }
 
 Header read_header(const std::string& path) {
-  check_before_itk(path);
+  check_before_itk(path, false);
   Header h;
   h.format = format_for(path);
   itk::ImageIOBase::Pointer io = image_io_for(path);
@@ -190,7 +192,7 @@ Header read_header(const std::string& path) {
 }
 
 std::vector<float> read_values(const std::string& path) {
-  check_before_itk(path);
+  check_before_itk(path, true);
   auto reader = itk::ImageFileReader<FloatImage>::New();
   reader->SetImageIO(image_io_for(path));
   reader->SetFileName(path);

@@ -315,7 +315,7 @@ void check_slice_pattern(const Header& h) {
 
 }  // namespace
 
-void check_metaimage_header(const fs::path& path) {
+void check_metaimage_header(const fs::path& path, bool compressed_data) {
   Header h(path);
   const std::uint64_t header_bytes = h.read();
   check_fields(h);
@@ -340,6 +340,7 @@ void check_metaimage_header(const fs::path& path) {
   const std::string& channels = h.value("ElementNumberOfChannels");
   if (!channels.empty()) need *= static_cast<std::uint64_t>(std::atoll(channels.c_str()));
   if (compressed) {
+    if (!compressed_data) return;
     // MetaIO inflated until the image was full, for ever when the stream
     // broke or ended first (compressed_data.h).
     const std::uint64_t size = h.has("CompressedDataSize") ? std::atoll(h.value("CompressedDataSize").c_str()) : 0;

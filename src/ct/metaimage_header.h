@@ -33,6 +33,10 @@ namespace grainlab::ct {
 // Throws InputError naming the file, the line and the field, and how to fix
 // it, at the first field that breaks the rules above; then as
 // check_declared_data when the data is shorter or longer than the header says.
-void check_metaimage_header(const std::filesystem::path& path);
+// Compressed data is inflated to check that it holds the whole image, as much
+// work as reading it: `compressed_data` false leaves that to the read of the
+// voxels, so that a header is read (and a volume too large for the machine's
+// memory refused) without inflating gigabytes.
+void check_metaimage_header(const std::filesystem::path& path, bool compressed_data = true);
 
 }  // namespace grainlab::ct
