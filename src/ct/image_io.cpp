@@ -1,5 +1,6 @@
 // Image files to volumes: header checks, units and the raw path here; ITK's
 // readers and writers behind itk_bridge.h.
+#include "core/text.h"
 #include "ct/image_io.h"
 
 #include "core/error.h"
@@ -20,12 +21,6 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr double kMillimetre = 1e-3;  // the unit of the NRRD and MetaImage files grainlab writes
-
-std::string lower_extension(const fs::path& p) {
-  std::string ext = p.extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return ext;
-}
 
 void check_size(const ImageSource& source, const Size3& size) {
   for (int a = 0; a < 3; ++a) {
@@ -151,7 +146,7 @@ ImageHeader read_stored_header(const ImageSource& source) {
     return h;
   }
   if (itk_bridge::format_for(source.path.string()).empty() || itk_bridge::format_for(source.path.string()) == "PNG") {
-    const std::string ext = lower_extension(source.path);
+    const std::string ext = lower(source.path.extension().string());
     if (ext == ".raw" || ext == ".bin" || ext == ".vol") {
       input_error("'{}' is a raw file: give its layout with --size NX NY NZ and --type uint8|uint16|float32 (and "
                   "--voxel-size), or write a .mhd header for it",
@@ -300,7 +295,7 @@ LabelVolume read_label_volume(const ImageSource& source) {
 }
 
 void write_grey_volume(const GreyVolume& volume, const fs::path& path, VoxelType type) {
-  const std::string ext = lower_extension(path);
+  const std::string ext = lower(path.extension().string());
   if (ext == ".raw") {
     write_raw_volume(volume, path, type);
     return;
@@ -336,7 +331,7 @@ void write_grey_slices(const GreyVolume& volume, const fs::path& folder, const s
 }
 
 void write_label_volume(const LabelVolume& labels, const fs::path& path) {
-  const std::string ext = lower_extension(path);
+  const std::string ext = lower(path.extension().string());
   if (ext != ".nrrd" && ext != ".mha") input_error("'{}': label images are written as .nrrd or .mha", path.string());
   const fs::path tmp = temporary_sibling(path);
   try {

@@ -14,6 +14,7 @@
 // (binary: the scalar's size; a list: its count's size) or two characters
 // (ASCII: a digit and a separator), so counts whose total exceeds the bytes
 // after the header are refused before assimp sees the file.
+#include "core/text.h"
 #include "geometry/mesh_io.h"
 
 #include "core/atomic_file.h"
@@ -46,12 +47,6 @@ namespace grainlab {
 namespace {
 
 static_assert(std::endian::native == std::endian::little, "binary STL I/O assumes a little-endian host");
-
-std::string lower_extension(const std::filesystem::path& path) {
-  std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char ch) { return std::tolower(ch); });
-  return ext;
-}
 
 // Refuses a binary STL whose size does not hold the triangles its header announces.
 void validate_stl(const std::filesystem::path& path, std::uintmax_t size) {
@@ -334,7 +329,7 @@ TriMesh read_mesh(const std::filesystem::path& path) {
   if (!std::filesystem::is_regular_file(path, ec)) {
     input_error("mesh '{}': not a regular file; give the path of an STL, OBJ or PLY file", name);
   }
-  const std::string ext = lower_extension(path);
+  const std::string ext = lower(path.extension().string());
   if (ext != ".stl" && ext != ".obj" && ext != ".ply") {
     input_error("mesh '{}': unsupported file type '{}'; convert it to STL, OBJ or PLY", name, ext);
   }
