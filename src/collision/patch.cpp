@@ -21,6 +21,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <vector>
 
@@ -80,9 +81,17 @@ void gather_planes(const ConvexPolytope& poly, const std::vector<Index>& verts, 
 
 // Four doubles at a time (GCC/Clang vector extension: AVX on x86-64-v3),
 // and the result of comparing them (all ones where true).
-using Lanes = double __attribute__((vector_size(32), aligned(8), may_alias));
+using Lanes = double __attribute__((vector_size(32)));
 using Mask = long long __attribute__((vector_size(32)));
 Lanes lanes(double v) { return Lanes{v, v, v, v}; }
+// Four doubles from p, which need not be 32-byte aligned (memcpy: no alignment
+// or aliasing assumed; a cast pointer with aligned(8) is honoured by GCC but
+// read as an aligned load by Clang, which faulted).
+Lanes load(const double* p) {
+  Lanes v;
+  std::memcpy(&v, p, sizeof v);
+  return v;
+}
 
 // Per-thread scratch of add_edges: o's candidate planes as arrays (padded to
 // whole lanes with planes no point is outside of), each vertex's row of
@@ -211,15 +220,15 @@ void add_edges(const PolytopeShape& s, const std::vector<Index>& verts, const Po
       // faces (a flat face of an angular grain) that keeps a few of some 30
       // lines below U. A slack of 1e-9 of the depths keeps the lines that
       // the walk below could take by its own tolerance.
-      const Lanes* const lp = reinterpret_cast<const Lanes*>(dp);
-      const Lanes* const lq = reinterpret_cast<const Lanes*>(dq);
-      const std::size_t blocks = npp / EdgeScratch::kLanes;
-      Lanes u = lp[0] > lq[0] ? lp[0] : lq[0], e0 = lp[0], e1 = lq[0];
+      constexpr std::size_t L = EdgeScratch::kLanes;
+      const std::size_t blocks = npp / L;
+      Lanes e0 = load(dp), e1 = load(dq), u = e0 > e1 ? e0 : e1;
       for (std::size_t i = 1; i < blocks; ++i) {
-        const Lanes hi = lp[i] > lq[i] ? lp[i] : lq[i];
+        const Lanes p0 = load(dp + i * L), q0 = load(dq + i * L);
+        const Lanes hi = p0 > q0 ? p0 : q0;
         u = hi < u ? hi : u;
-        e0 = lp[i] < e0 ? lp[i] : e0;
-        e1 = lq[i] < e1 ? lq[i] : e1;
+        e0 = p0 < e0 ? p0 : e0;
+        e1 = q0 < e1 ? q0 : e1;
       }
       const double upper = std::min(std::min(u[0], u[1]), std::min(u[2], u[3]));
       if (upper <= 0) continue;
@@ -237,7 +246,7 @@ void add_edges(const PolytopeShape& s, const std::vector<Index>& verts, const Po
       std::uint32_t* const pl = x.line_plane.data();
       std::size_t n = 0;
       for (std::size_t i = 0; i < blocks; ++i) {
-        const Lanes p0 = lp[i], q0 = lq[i];
+        const Lanes p0 = load(dp + i * L), q0 = load(dq + i * L);
         const Lanes f0 = p0 - pa, f1 = q0 - qa, g0 = p0 - pb, g1 = q0 - qb;
         const Mask keep = ((p0 < q0 ? p0 : q0) <= up) & (f1 <= tol) & (g0 <= tol) &
                           (f0 * (g1 - g0) + g0 * (f0 - f1) <= tol2 + tol * (f0 - f1 + g1 - g0));
