@@ -20,7 +20,8 @@
 // locally optimal face. Callers use it only with a warm direction (the pair's
 // normal from the previous step, separated or touching); it reports failure
 // (the caller falls back to GJK/EPA) if the shapes are apart along a later
-// direction, or if the depth found exceeds 5 % of the shapes' size.
+// direction, if the depth found exceeds 5 % of the shapes' size, or if the
+// iteration does not settle and GJK finds the shapes apart.
 //
 // Shortcuts keep it cheap. Shapes clearly apart along the warm direction
 // (h_C(n) < -1 % of their size) are reported apart with depth h_C(n), minus a
@@ -147,6 +148,7 @@ bool warm_penetration(const ShapeA& a, const PolytopeShape& b, Vec3& dir, Contac
   }
   double best = std::numeric_limits<double>::infinity();
   Vec3 best_n = n, best_point = Vec3::Zero();
+  bool settled = false;
   for (int iter = 0; iter < 6; ++iter) {
     const Vec3 t = (h + 1e-3 * h + 1e-9 * size) * n;
     const ShiftedPolytope moved{b, t, b.hint};
@@ -162,20 +164,36 @@ bool warm_penetration(const ShapeA& a, const PolytopeShape& b, Vec3& dir, Contac
       best_point = g.point - 0.5 * t;
     }
     if (!(h2 > 0)) return false;  // a separating direction: GJK measures the gap
-    if ((n2 - n).squaredNorm() < 1e-20 || (h2 <= h && h - h2 < 1e-6 * h)) break;
-    // Fixed point without another GJK: the closest point lies on a triangle T
-    // of a face of C (normal n2), and the origin's foot on that face, h2 n2,
+    // Settled when the direction or the depth stops changing, or at a fixed
+    // point proved without another GJK: the closest point lies on a triangle
+    // T of a face of C (normal n2), and the origin's foot on that face, h2 n2,
     // lies inside T too (in the shifted frame: h2 n2 - t). The next iteration
     // would shift along n2, find the same face and return n2 again.
-    if (info.simplex_size == 3 && h2 <= h &&
-        penetration_detail::inside_triangle(info.simplex, h2 * n2 - t))
-      break;
+    settled = (n2 - n).squaredNorm() < 1e-20 || (h2 <= h && h - h2 < 1e-6 * h) ||
+              (info.simplex_size == 3 && h2 <= h && penetration_detail::inside_triangle(info.simplex, h2 * n2 - t));
+    if (settled) break;
     n = n2;
     h = h2;
   }
   // Only shallow contacts are this routine's business: a deep answer means the
   // start direction was poor (the local iteration may have found the wrong face).
   if (!std::isfinite(best) || best > 0.05 * size) return false;
+  // Not settled in six steps: the smallest h_C seen bounds the depth from
+  // above only if the shapes overlap at all. An iteration that wanders (from
+  // a poor direction) can see only positive h_C of shapes that are apart, so
+  // GJK on the pair decides (the hints restored: this call's answer stays as
+  // it was); apart, GJK/EPA answers instead (about one call in 1e5 of a
+  // direct shear does not settle, each of them a contact).
+  if (!settled) {
+    Index hint_a = 0;
+    if constexpr (gjk_detail::HasHint<ShapeA>) hint_a = a.hint;
+    const Index hint_b = b.hint;
+    Vec3 d = n;
+    const bool overlap = gjk_epa(a, b, d).touching;
+    if constexpr (gjk_detail::HasHint<ShapeA>) a.hint = hint_a;
+    b.hint = hint_b;
+    if (!overlap) return false;
+  }
   out.touching = best > 0;
   out.depth = best;
   out.normal = best_n;
