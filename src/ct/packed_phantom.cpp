@@ -92,7 +92,11 @@ Mat3 turn(const Vec3& axis, double angle) { return Eigen::AngleAxisd(angle, axis
 Grain make_shape(const PackedPhantomSpec& spec, Rng& rng) {
   Grain g;
   const double b = 0.5 * spec.grain_size * rng.uniform(1 - spec.size_spread, 1 + spec.size_spread);
-  g.semi = Vec3(b * rng.uniform(spec.aspect_min, spec.aspect_max), b, b * rng.uniform(0.75, 0.95));
+  // One draw a statement here and below: the order of a call's arguments, or
+  // of an operator's operands, is the compiler's, and a seed must give the
+  // same phantom whatever compiled it.
+  const double flat = rng.uniform(0.75, 0.95), aspect = rng.uniform(spec.aspect_min, spec.aspect_max);
+  g.semi = Vec3(b * aspect, b, b * flat);
   g.power = 2 + static_cast<int>(rng.uniform(0, 3));
   // The dent: on the flank (a direction across the long axis), 0.2-0.35 b deep.
   const double phi = rng.uniform(0, 2 * M_PI);
@@ -151,9 +155,13 @@ PackedPhantom make_packed_phantom(const PackedPhantomSpec& spec) {
         const Grain& p = grains.back();
         Vec3 u;
         if (k % 2 == 1) {  // side by side: long axes parallel within 15 degrees
-          const double roll = std::floor(rng.uniform(0, 4)) * M_PI / 2 + rng.uniform(-0.15, 0.15);
-          g.axes = p.axes * turn(Vec3::UnitX(), roll) * turn(rng.unit_vector(), rng.uniform(0, 10 * M_PI / 180));
-          const double phi = std::floor(rng.uniform(0, 4)) * M_PI / 2 + rng.uniform(-0.25, 0.25);
+          const double roll_quarter = std::floor(rng.uniform(0, 4)), roll_off = rng.uniform(-0.15, 0.15);
+          const double roll = roll_quarter * M_PI / 2 + roll_off;
+          const double tilt = rng.uniform(0, 10 * M_PI / 180);
+          const Vec3 tilt_axis = rng.unit_vector();
+          g.axes = p.axes * turn(Vec3::UnitX(), roll) * turn(tilt_axis, tilt);
+          const double phi_quarter = std::floor(rng.uniform(0, 4)), phi_off = rng.uniform(-0.25, 0.25);
+          const double phi = phi_quarter * M_PI / 2 + phi_off;
           u = p.axes * Vec3(rng.uniform(-0.3, 0.3), std::cos(phi), std::sin(phi)).normalized();
         } else {
           g.axes = rng.rotation().toRotationMatrix();

@@ -136,8 +136,10 @@ SyntheticScene make_synthetic_scene(const SyntheticSpec& spec) {
     for (int attempt = 0; attempt < kPlacementTries && !done; ++attempt) {
       const Quat q = rng.rotation();
       if (!second_of_pair) {
-        const Vec3 c(rng.uniform(r + kGap, n - 1 - kGap - r), rng.uniform(r + kGap, n - 1 - kGap - r),
-                     rng.uniform(r + kGap, n - 1 - kGap - r));
+        // One draw a statement (a call's argument order is the compiler's).
+        const double lo = r + kGap, hi = n - 1 - kGap - r;
+        const double cz = rng.uniform(lo, hi), cy = rng.uniform(lo, hi), cx = rng.uniform(lo, hi);
+        const Vec3 c(cx, cy, cz);
         if (!fits(c, r, -1)) continue;
         placed.push_back({moved(shape, q, c), c, r});
         done = true;

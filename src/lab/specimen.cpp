@@ -42,7 +42,11 @@ Specimen place_loose_specimen(World& world, const LabSpec& spec, Index grain_mat
     const Vec3 x(-0.5 * L + (in_layer % nx + 0.5) * sx, -0.5 * W + (in_layer / nx + 0.5) * sy,
                  (layer + 0.5) * pitch);
     const Index shape = shapes[rng.next_u64() % shapes.size()];
-    world.add_body(shape, grain_material, 1.0, x, rng.rotation(), 1e-3 * rng.unit_vector());
+    // One draw a statement: the order of a call's arguments is the compiler's
+    // choice, and a seed must give the same specimen whatever compiled it.
+    const Vec3 v = 1e-3 * rng.unit_vector();
+    const Quat q = rng.rotation();
+    world.add_body(shape, grain_material, 1.0, x, q, v);
     sp.solid_volume += m.shapes[shape].volume;
     sp.mean_mass += m.bodies.back().gravity_mass / count;
   }
