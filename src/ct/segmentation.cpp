@@ -39,20 +39,6 @@ std::uint64_t estimated_bytes(const Size3& size) {
   return static_cast<std::uint64_t>(size[0]) * size[1] * size[2] * kBytesPerVoxel;
 }
 
-std::uint64_t available_memory_bytes() {
-  std::ifstream in("/proc/meminfo");
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.rfind("MemAvailable:", 0) == 0) {
-      std::istringstream s(line.substr(13));
-      std::uint64_t kb = 0;
-      s >> kb;
-      return kb * 1024;
-    }
-  }
-  return 0;
-}
-
 void check_memory(const Size3& size, const std::string& image_name, std::uint64_t read_buffer_bytes) {
   const std::uint64_t need = estimated_bytes(size) + read_buffer_bytes, have = available_memory_bytes();
   if (have > 0 && need > have) {

@@ -13,6 +13,7 @@
 // A label image (already segmented) starts at step 4.
 #pragma once
 
+#include "core/available_memory.h"
 #include "ct/grain_mesher.h"
 #include "ct/grain_quality.h"
 #include "ct/progress.h"
@@ -91,9 +92,6 @@ Segmentation segment_labels(LabelVolume labels, const SegmentOptions& options, P
 // on a 256^3 volume, rounded up).
 inline constexpr int kBytesPerVoxel = 40;
 std::uint64_t estimated_bytes(const Size3& size);
-
-// Memory the system can give now (/proc/meminfo MemAvailable), or 0 when unknown.
-std::uint64_t available_memory_bytes();
 
 // Throws InputError when estimated_bytes(size) plus `read_buffer_bytes` (held
 // while reading, ImageHeader::read_buffer_bytes) exceeds the available memory,

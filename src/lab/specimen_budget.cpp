@@ -33,19 +33,6 @@ double specimen_grain_count(const BoxSpec& box, double e, double v_mean) {
   return box.length * box.width * box.height / ((1 + e) * v_mean);
 }
 
-double available_memory_bytes() {
-  std::ifstream in("/proc/meminfo");
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.rfind("MemAvailable:", 0) != 0) continue;
-    std::istringstream s(line.substr(13));
-    double kib = 0;
-    s >> kib;
-    return kib * 1024;
-  }
-  return 0;
-}
-
 void refuse_impossible_specimen(double count, double available, const BoxSpec& box, double mean_diameter,
                                 const char* what) {
   const double need = count * bytes_per_grain();

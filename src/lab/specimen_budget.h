@@ -27,6 +27,7 @@
 // refused when it needs more, or when N exceeds what an Index holds.
 #pragma once
 
+#include "core/available_memory.h"
 #include "lab/lab_spec.h"
 
 #include <cstdint>
@@ -41,9 +42,6 @@ double bytes_per_grain();
 
 // Grains that fill the box at void ratio e with grains of mean volume v_mean (m^3).
 double specimen_grain_count(const BoxSpec& box, double e, double v_mean);
-
-// Bytes of memory the system can still give (MemAvailable); 0 if unknown.
-double available_memory_bytes();
 
 // Throws InputError, naming the grain count and the memory, when `count`
 // grains (for `what`, e.g. "the direct shear specimen") would not fit in

@@ -1,8 +1,8 @@
 // Fuzz harness: a PLY file (ASCII or binary) through load_mesh, as a grain's mesh file reaches
 // grainlab (geometry/mesh_check.h: read_mesh with its bounds, then the
-// checks and repairs). assimp parses the format; what is fuzzed is
-// grainlab's wrapper around it: its size bounds, the checks of what assimp
-// returns, and the repairs. See harness_input.h.
+// checks and repairs). grainlab's own reader parses the format
+// (geometry/ply_reader.h): its header checks, its bounds on every count, the
+// triangulation, then the merge and the repairs are fuzzed. See harness_input.h.
 #include "fuzz/harness_input.h"
 #include "geometry/mesh_check.h"
 
