@@ -158,7 +158,9 @@ class Header {
       fail(n, fmt::format("the value of '{}' is a text of {} characters, more than the {} a MetaImage text field "
                           "holds",
                           key, value.size(), kMaxText),
-           "shorten it");
+           key == "ElementDataFile" ? "give the data file's path relative to the header's folder (move the data file "
+                                      "beside the header and name the file alone)"
+                                    : "shorten it");
     }
     if (value.size() > kMaxValue) {
       fail(n, fmt::format("the value of '{}' has {} characters, more than the {} a MetaImage field holds", key,

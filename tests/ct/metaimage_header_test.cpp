@@ -81,6 +81,10 @@ TEST_F(MetaImageHeader, EachBrokenFieldIsRefusedNamingItsLine) {
             std::string::npos)
       << "MetaIO copied text into 255 bytes (tests/fuzz/corpus/metaimage/crash_long_text_value_11bf7fd3)";
   EXPECT_EQ(refusal("Name = " + std::string(254, 'n') + "\n" + kFields), "");
+  EXPECT_NE(refusal(kFields, "ElementDataFile = " + std::string(300, 'd') + ".raw\n")
+                .find("give the data file's path relative to the header's folder"),
+            std::string::npos)
+      << "a long data file path (a deep absolute folder) is told how to fit";
   EXPECT_NE(refusal(kFields, "", "").find("no 'ElementDataFile' field"), std::string::npos);
   EXPECT_NE(refusal(kFields, "ElementDataFile = LOCALo\n").find("its data file '"), std::string::npos);
   EXPECT_NE(refusal(replaced(kFields, "DimSize = 4 3 2", "DimSize = 4 3 4")).find("is truncated or its header is "
