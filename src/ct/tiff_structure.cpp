@@ -80,9 +80,19 @@ class TiffWalk {
  private:
   template <typename... Args>
   [[noreturn]] void fail(fmt::format_string<Args...> f, Args&&... args) const {
+    refuse(fmt::format(f, std::forward<Args>(args)...), "the file is damaged or not a TIFF: export the scan again");
+  }
+  // A text tag TIFF's rules forbid, in a file whose image may be whole (some
+  // writers leave the NUL out or shorten DateTime): ITK cannot read it safely.
+  template <typename... Args>
+  [[noreturn]] void fail_text(fmt::format_string<Args...> f, Args&&... args) const {
+    refuse(fmt::format(f, std::forward<Args>(args)...),
+           "the image may be whole, but ITK reads past such a tag: save the stack again with a tool that writes "
+           "standard TIFF (Fiji: File > Save As > Tiff...) or convert it to NRRD or MetaImage");
+  }
+  [[noreturn]] void refuse(const std::string& what, const char* fix) const {
     const std::string where = page_ < 0 ? "" : fmt::format(", page {}", page_ + 1);
-    input_error("'{}' (TIFF{}): {}; the file is damaged or not a TIFF: export the scan again", path_.string(),
-                where, fmt::format(f, std::forward<Args>(args)...));
+    input_error("'{}' (TIFF{}): {}; {}", path_.string(), where, what, fix);
   }
 
   void read(std::uint64_t at, void* out, std::uint64_t n) {
@@ -141,7 +151,7 @@ class TiffWalk {
     std::uint8_t last = 1;
     if (e.count > 0) read(e.at + e.count - 1, &last, 1);
     if (last != 0) {
-      fail("tag {} is text (type 2) of {} bytes that does not end with a NUL, as TIFF text must", tag, e.count);
+      fail_text("tag {} is text (type 2) of {} bytes that does not end with a NUL, as TIFF text must", tag, e.count);
     }
   }
 
@@ -157,7 +167,7 @@ class TiffWalk {
     while (chars < n && text[chars] != 0) ++chars;
     const std::uint64_t held = chars + 1;
     if (e.type != 2 || held < 20) {
-      fail("its DateTime (tag 306) holds {} characters up to its first NUL (type {}), fewer than the 20 TIFF fixes "
+      fail_text("its DateTime (tag 306) holds {} characters up to its first NUL (type {}), fewer than the 20 TIFF fixes "
            "('YYYY:MM:DD HH:MM:SS' and a NUL)", e.type == 2 ? held : 0, e.type);
     }
   }

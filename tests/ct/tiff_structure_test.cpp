@@ -156,6 +156,12 @@ TEST_F(TiffStructure, EachBreakageIsRefusedByName) {
     c.breakage(t);
     EXPECT_NE(refusal(make_tiff(t)).find(c.message), std::string::npos) << c.message;
   }
+  TiffSpec short_date;
+  short_date.date = "2026:12:06";
+  EXPECT_NE(refusal(make_tiff(short_date)).find("the image may be whole, but ITK reads past such a tag: save the "
+                                                "stack again with a tool that writes standard TIFF"),
+            std::string::npos)
+      << "a writer's non-standard text tag is not called damage, and the fix says what to use";
   const std::string whole = make_tiff(TiffSpec{});
   EXPECT_NE(refusal(whole.substr(0, whole.size() - 20)).find("runs past the file's end"), std::string::npos);
   EXPECT_NE(refusal(std::string("II*\0", 4)).find("fewer than a TIFF header's 8"), std::string::npos);
