@@ -56,7 +56,7 @@ IndexPreparation prepare_index_specimen(const LabSpec& spec, const IndexDensityO
                            w.state.step, t.phase_name(), earlier_s));
     earlier_s = std::max(earlier_s, 0.0);
   }
-  Stopwatch clock, since_kept;
+  Stopwatch clock, since_kept, since_line;
   const PreparationPhase goal = dense ? PreparationPhase::Consolidate : PreparationPhase::Compact;
   const std::int64_t cap = std::min<std::int64_t>(o.max_steps, 399000);
   std::int64_t next_line = (w.state.step / 10000 + 1) * 10000;
@@ -71,8 +71,11 @@ IndexPreparation prepare_index_specimen(const LabSpec& spec, const IndexDensityO
                            "there)",
                            name, seed, w.state.step);
       });
-    if (!progress || w.state.step < next_line) continue;
-    next_line += 10000;
+    // A line every 10,000 steps, or every minute where steps are slow (a
+    // concave grain's index box runs about ten steps a second).
+    if (!progress || (w.state.step < next_line && since_line.seconds() < 60)) continue;
+    next_line = (w.state.step / 10000 + 1) * 10000;
+    since_line.reset();
     progress(fmt::format("  {} seed {}: step {}, {} phase, {:.0f} s: {}", name, seed, w.state.step, t.phase_name(),
                          earlier_s + clock.seconds(), t.status_line()));
   }
