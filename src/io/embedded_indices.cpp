@@ -49,6 +49,19 @@ const EmbeddedIndices& sh_ottawa_indices() {
   return record;
 }
 
+const EmbeddedIndices& sh_river_indices() {
+  // Measured 2026-12-07 on the project's 2-core machine by `grainlab grains
+  // index --preset sh-river --seeds 1 --threads 1` (the default config with
+  // [grains] preset = "sh-river": 24 shapes of 200 faces, 0.707-0.841 mm,
+  // seed 1; index box 10 x 8 d_max, 1,838 grains), the machine shared.
+  // e_min: frictionless deposition and compaction at 100 kPa, 40,900 steps,
+  // 3,753 s; e_max: deposition at friction 1.0, 12,200 steps, 394 s.
+  static const EmbeddedIndices record{
+      0xd8b51b1fac884d6bull, 0xaf1b3056u, 0.5044328445776496, 0.771152771725204, 0.5750369089987621, 1.0527799341463053,
+      "measured 2026-12-07 with `grainlab grains index --preset sh-river --seeds 1` (seed 1)"};
+  return record;
+}
+
 std::uint64_t index_key_hash(const LabSpec& spec) {
   const std::string key = index_cache_key(spec);
   return fnv1a64(std::span(reinterpret_cast<const std::uint8_t*>(key.data()), key.size()));
@@ -56,7 +69,8 @@ std::uint64_t index_key_hash(const LabSpec& spec) {
 
 std::optional<EmbeddedIndices> embedded_index_densities(const LabSpec& spec) {
   const std::uint64_t key = index_key_hash(spec);
-  for (const EmbeddedIndices* r : {&default_grain_indices(), &bench_bead_indices(), &sh_ottawa_indices()})
+  for (const EmbeddedIndices* r :
+       {&default_grain_indices(), &bench_bead_indices(), &sh_ottawa_indices(), &sh_river_indices()})
     if (key == r->key_hash) return *r;
   return std::nullopt;
 }

@@ -5,9 +5,9 @@
 // those of the 2000-bead direct shear that grainlab is compared with other
 // sphere codes on (bench/liggghts/beads_direct_shear.toml: glass beads, its
 // material and time step), whose measurement (about 65,000 steps, a fifth of
-// that test's wall time) the other codes do not make. A third holds those of
-// the sh-ottawa preset with every other key at its default (an hour of one
-// core to measure).
+// that test's wall time) the other codes do not make. Two more hold those of
+// the sh-ottawa and sh-river presets with every other key at their defaults
+// (an hour of one core each to measure).
 //
 // They are what `grainlab run` itself would measure (lab/index_densities.h,
 // one seed at the run's seed), for exactly the default inputs that the
@@ -45,8 +45,10 @@ const EmbeddedIndices& default_grain_indices();
 // The record for the beads of bench/liggghts/beads_direct_shear.toml.
 const EmbeddedIndices& bench_bead_indices();
 
-// The record for the default config with [grains] preset = "sh-ottawa".
+// The records for the default config with [grains] preset = "sh-ottawa",
+// and with preset = "sh-river".
 const EmbeddedIndices& sh_ottawa_indices();
+const EmbeddedIndices& sh_river_indices();
 
 // fnv1a64 of index_cache_key(spec).
 std::uint64_t index_key_hash(const LabSpec& spec);

@@ -108,21 +108,24 @@ TEST(EmbeddedIndices, BelongToTheBenchBeadsAndNothingElse) {
 
 // The sh-ottawa preset's record: the default config with that preset, and the
 // spherical-harmonic grains the shape model draws for it; nothing else.
-TEST(EmbeddedIndices, BelongToTheShOttawaPresetAndItsGrains) {
+namespace {
+
+// An SH preset's record belongs to the default config with that preset (its
+// key and its grains), and to nothing else near it.
+void expect_sh_preset_record(const std::string& preset, const EmbeddedIndices& r) {
   LabSpec spec;
-  spec.grains.preset = "sh-ottawa";
-  const EmbeddedIndices& r = sh_ottawa_indices();
+  spec.grains.preset = preset;
   EXPECT_EQ(index_key_hash(spec), r.key_hash)
-      << "the sh-ottawa preset's embedded indices were measured for other inputs: measure them again with "
-         "`build/grainlab grains index --preset sh-ottawa --seeds 1 --threads 1` (about an hour) and put e_min, "
-         "e_max, this key hash and this fingerprint in src/io/embedded_indices.cpp (key hash 0x"
-      << std::hex << index_key_hash(spec) << ")";
+      << "the " << preset << " preset's embedded indices were measured for other inputs: measure them again with "
+      << "`build/grainlab grains index --preset " << preset << " --seeds 1 --threads 1` (about an hour) and put "
+      << "e_min, e_max, this key hash and this fingerprint in src/io/embedded_indices.cpp (key hash 0x" << std::hex
+      << index_key_hash(spec) << ")";
   LabSpec known = spec;
   known.specimen.own_e_min = r.e_min;
   known.specimen.own_e_max = r.e_max;
   const DirectShearTest test(known);
   const std::uint32_t grains = grains_fingerprint(test.world().model);
-  EXPECT_EQ(grains, r.grains) << "the sh-ottawa grains changed (fingerprint 0x" << std::hex << grains
+  EXPECT_EQ(grains, r.grains) << "the " << preset << " grains changed (fingerprint 0x" << std::hex << grains
                               << "): measure the record again as above";
   const auto taken = embedded_index_densities(spec);
   ASSERT_TRUE(taken);
@@ -130,13 +133,25 @@ TEST(EmbeddedIndices, BelongToTheShOttawaPresetAndItsGrains) {
   EXPECT_GT(r.e_min, 0.3);
   EXPECT_GT(r.e_max, r.e_min + 0.1);
   EXPECT_LT(r.e_max, 1.0);
-  const auto other = [&](auto change) {
+  const auto takes_this = [&](auto change) {
     LabSpec s = spec;
     change(s);
-    return embedded_index_densities(s).has_value();
+    const auto t = embedded_index_densities(s);
+    return t && t->key_hash == r.key_hash;
   };
-  EXPECT_FALSE(other([](LabSpec& s) { s.grains.preset = "sh-river"; }));
-  EXPECT_FALSE(other([](LabSpec& s) { s.grains.faces = 1000; }));
-  EXPECT_FALSE(other([](LabSpec& s) { s.seed = 2; }));
-  EXPECT_FALSE(other([](LabSpec& s) { s.numerics.time_step_fraction = 0.2; }));
+  for (const char* other : {"rounded", "sh-ottawa", "sh-river", "sh-limestone"})
+    if (other != preset) EXPECT_FALSE(takes_this([&](LabSpec& s) { s.grains.preset = other; })) << other;
+  EXPECT_FALSE(takes_this([](LabSpec& s) { s.grains.faces = 1000; }));
+  EXPECT_FALSE(takes_this([](LabSpec& s) { s.seed = 2; }));
+  EXPECT_FALSE(takes_this([](LabSpec& s) { s.numerics.time_step_fraction = 0.2; }));
+}
+
+}  // namespace
+
+TEST(EmbeddedIndices, BelongToTheShOttawaPresetAndItsGrains) {
+  expect_sh_preset_record("sh-ottawa", sh_ottawa_indices());
+}
+
+TEST(EmbeddedIndices, BelongToTheShRiverPresetAndItsGrains) {
+  expect_sh_preset_record("sh-river", sh_river_indices());
 }
