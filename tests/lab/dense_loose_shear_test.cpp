@@ -154,10 +154,17 @@ Mean mean_of(double deposition_friction) {
 // 10 %, smoothed maximum 0.570 at 3.9 % on a plateau (0.46-0.57 from 3.5 %
 // on), 0.545 at 10 % (4.4 % below its maximum). The three-specimen means
 // since session 18 are printed by the test.
-// "Peaks later" is read as the loose specimens not softening as the dense
-// ones do (less than half the dense mean's drop from its maximum to 10 %): a
-// loose sand has no peak, its strength is mobilised on a plateau, and the
-// strain at the maximum of a noisy plateau is noise.
+// What is held is what every realisation showed: these means were read for
+// seeds 3-5, 6-8 and 9-11, and with the engine's rounding changed by one ulp
+// (the sphere-sphere normal as d * (1 / |d|)) for seeds 3-5, 6-8, 9-11, 3-8
+// and 6-11 (2026-12-07). In all of them the dense curve peaked at 0.75-0.87
+// at 2.3-4.2 %, softened by 19-37 % and dilated by 151-168 um, and the loose
+// one went down by 10-18 um at 1 %, peaked at 0.54-0.59 at 5.9-9.8 %, later
+// than the dense one, and ended 1-37 um down. Two claims held before were
+// dropped, each broken by that change of rounding alone: that the loose cap
+// rises by 5 um from a low point (3.0 and 4.9 um) and that the loose mean
+// softens by less than half the dense one's drop (11 % against 10.7 %): a
+// box of 345 beads near e_max does not decide either.
 TEST(DenseLooseShear, DenseSpecimenPeaksEarlySoftensAndDilatesLooseContractsAndPeaksLowerLater) {
   const Mean d = mean_of(0.0);
   EXPECT_GE(d.dr_min, 0.9);
@@ -167,15 +174,12 @@ TEST(DenseLooseShear, DenseSpecimenPeaksEarlySoftensAndDilatesLooseContractsAndP
 
   const Mean c = mean_of(0.5);
   EXPECT_LE(c.dr_max, 0.3);
-  // Contracts first: the cap goes down (still below its start at 1 %
-  // strain), and then dilates: it rises by more than 5 um (0.12 % of the
-  // height) from a low point. Until session 18 this read "the cap ends above
-  // its lowest point", which holds only if nothing collapses after the
-  // dilation; the three-specimen mean (Dr -0.4 to -0.1) goes down to -18 um
-  // at 3 %, up to -10.5 um at 5 %, then down to -29 um at 10 % as chains
-  // collapse.
+  // Contracts first: the cap goes down (still below its start at 1 % strain),
+  // and ends far below the dense one (less than half its rise).
   EXPECT_LT(c.dv[c.dv.size() / 10], 0.0);
-  EXPECT_GT(c.rise, 5e-6);
+  EXPECT_LT(c.dv.back(), 0.5 * d.dv.back());
+  // Peaks lower and later: a lower maximum of the mean curve, reached at a
+  // larger strain.
   EXPECT_LT(c.peak, d.peak);
-  EXPECT_LT((c.peak - c.at_end) / c.peak, 0.5 * (d.peak - d.at_end) / d.peak);
+  EXPECT_GT(c.peak_strain, d.peak_strain);
 }
