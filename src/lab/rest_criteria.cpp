@@ -21,15 +21,16 @@ double contact_elastic_energy(const Model& m, const State& s) {
 
 double packing_kinetic_energy(const World& w) {
   const std::size_t n = w.state.bodies.size();
-  // Per sphere: its frictional contacts so far (0, 1 = all along one line, 2
-  // = not), and the first one's normal.
-  std::vector<char> braked(n, 0);
+  // Per sphere, what its frictional contacts can brake: nothing (none), all
+  // but the spin about `axis` (all on one line), or every spin (two lines).
+  enum Brakes : char { kNothing, kAllButAxis, kEverySpin };
+  std::vector<Brakes> brakes(n, kNothing);
   std::vector<Vec3> axis(n, Vec3::Zero());
   const auto brake = [&](Index i, const Vec3& normal) {
-    if (braked[i] == 0) {
-      braked[i] = 1, axis[i] = normal;
-    } else if (braked[i] == 1 && normal.cross(axis[i]).squaredNorm() > 1e-12) {
-      braked[i] = 2;  // two lines: every spin slides one of them
+    if (brakes[i] == kNothing) {
+      brakes[i] = kAllButAxis, axis[i] = normal;
+    } else if (brakes[i] == kAllButAxis && normal.cross(axis[i]).squaredNorm() > 1e-12) {
+      brakes[i] = kEverySpin;
     }
   };
   for (const Contact& c : w.state.contacts)
@@ -42,12 +43,12 @@ double packing_kinetic_energy(const World& w) {
   for (std::size_t i = 0; i < n; ++i) {
     const BodyModel& m = w.model.bodies[i];
     const BodyState& s = w.state.bodies[i];
-    if (!w.model.shapes[m.shape].isotropic || braked[i] == 2) {
+    if (!w.model.shapes[m.shape].isotropic || brakes[i] == kEverySpin) {
       e += kinetic_energy_of(m, s);
       continue;
     }
     e += 0.5 * m.mass * s.v.squaredNorm();
-    if (braked[i] == 1) {  // the spin about the line of its frictional contacts is free; the rest is not
+    if (brakes[i] == kAllButAxis) {  // the spin about the line of its frictional contacts is free
       const Vec3 slides = s.w - s.w.dot(axis[i]) * axis[i];
       e += 0.5 * m.inertia.x() * slides.squaredNorm();
     }
