@@ -85,6 +85,31 @@ TEST(SettlingBed, OneTwoAndThreeThreadsGiveIdenticalStates) {
   }
 }
 
+// A bed of spheres: on one thread the grain contacts are made inside the
+// forces phase a batch at a time (World::step's compact pass), on more in
+// two parallel passes over the pairs; the states are the same bit for bit.
+TEST(SettlingBed, SpheresOnOneTwoAndThreeThreadsGiveIdenticalStates) {
+  SettlingBedSpec spec = test_bed();
+  spec.grains = 400;
+  spec.spheres = true;
+  const auto run = [&](int threads) {
+    SettlingBed bed = make_settling_bed(spec);
+    bed.world.settings.threads = threads;
+    bed.world.settings.serial_below = 0;
+    bed.world.model.gravity *= 20;
+    const double dt = 0.2 * bed.world.critical_time_step();
+    const int steps = static_cast<int>(0.03 / dt);
+    for (int i = 0; i < steps; ++i) bed.world.step(dt);
+    return bed.world;
+  };
+  const World one = run(1);
+  EXPECT_GT(one.contact_count(), 400u) << "too few contacts to fill many batches and blocks";
+  for (int threads : {2, 3}) {
+    const World many = run(threads);
+    EXPECT_TRUE(testing_support::same_state_bits(one.state, many.state)) << "1 and " << threads << " threads differ";
+  }
+}
+
 // threads = 0 leaves the count to the step's tuner (core/thread_tuner.h).
 // Here its windows are one step long and it holds nothing, so the count
 // changes every few steps: the state is still bit for bit the 1-thread one.
