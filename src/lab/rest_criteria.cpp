@@ -21,18 +21,36 @@ double contact_elastic_energy(const Model& m, const State& s) {
 
 double packing_kinetic_energy(const World& w) {
   const std::size_t n = w.state.bodies.size();
-  std::vector<char> braked(n, 0);  // the sphere has a frictional contact
+  // Per sphere: its frictional contacts so far (0, 1 = all along one line, 2
+  // = not), and the first one's normal.
+  std::vector<char> braked(n, 0);
+  std::vector<Vec3> axis(n, Vec3::Zero());
+  const auto brake = [&](Index i, const Vec3& normal) {
+    if (braked[i] == 0) {
+      braked[i] = 1, axis[i] = normal;
+    } else if (braked[i] == 1 && normal.cross(axis[i]).squaredNorm() > 1e-12) {
+      braked[i] = 2;  // two lines: every spin slides one of them
+    }
+  };
   for (const Contact& c : w.state.contacts)
     if (in_contact(c) && w.pair(w.model.bodies[c.a].material, w.model.bodies[c.b].material).friction > 0)
-      braked[c.a] = braked[c.b] = 1;
+      brake(c.a, c.geo.normal), brake(c.b, c.geo.normal);
   for (const Contact& c : w.state.wall_contacts)
     if (in_contact(c) && w.pair(w.model.walls[c.a].material, w.model.bodies[c.b].material).friction > 0)
-      braked[c.b] = 1;
+      brake(c.b, c.geo.normal);
   double e = 0;
   for (std::size_t i = 0; i < n; ++i) {
     const BodyModel& m = w.model.bodies[i];
     const BodyState& s = w.state.bodies[i];
-    e += w.model.shapes[m.shape].isotropic && !braked[i] ? 0.5 * m.mass * s.v.squaredNorm() : kinetic_energy_of(m, s);
+    if (!w.model.shapes[m.shape].isotropic || braked[i] == 2) {
+      e += kinetic_energy_of(m, s);
+      continue;
+    }
+    e += 0.5 * m.mass * s.v.squaredNorm();
+    if (braked[i] == 1) {  // the spin about the line of its frictional contacts is free; the rest is not
+      const Vec3 slides = s.w - s.w.dot(axis[i]) * axis[i];
+      e += 0.5 * m.inertia.x() * slides.squaredNorm();
+    }
   }
   return e;
 }

@@ -5,11 +5,18 @@
 //    E_k < 1e-2 E_el, with E_el the contact law's elastic energy summed over
 //    the contacts (Hertz: f = K delta^{3/2}, so the work int f d(delta) =
 //    (2/5) f delta; Hooke: (1/2) f delta). E_k leaves out the spin of a
-//    sphere with no frictional contact: a frictionless contact's force passes
-//    through a sphere's centre, so nothing acts on that spin, it never decays
-//    and it moves nothing (measured, session 5: a bead on the lubricated
-//    floor spinning at 805 rad/s held 94 % of a packing's kinetic energy at an
-//    unbalanced ratio of 7e-12, and the Dr 0.3 preparation never ended).
+//    sphere that no contact can brake: a contact's normal force passes
+//    through a sphere's centre, and a point contact's friction acts only on
+//    the slip at the point, which a spin about the contact's own normal does
+//    not make. So a sphere's spin is left out whole when it has no
+//    frictional contact, and its component along the line of its frictional
+//    contacts when they all lie on one line (one contact, or two opposite):
+//    nothing acts on it, it never decays and it moves nothing. Measured: a
+//    bead on the lubricated floor spinning at 805 rad/s held 94 % of a
+//    packing's kinetic energy at an unbalanced ratio of 7e-12, and the Dr 0.3
+//    preparation never ended; a bead among three frictionless walls and one
+//    frictional grain contact spun at 511 rad/s about that contact's normal
+//    (to 1e-11) and held all of a triaxial compaction's kinetic energy.
 //  * Unbalanced-force ratio: mean |resultant| per grain over the mean
 //    |contact force| (1 with no contacts). Averaged: each grain's resultant
 //    is first averaged over the steps of a window (ForceWindow; the direct
@@ -34,8 +41,8 @@ inline constexpr int kCalmChecks = 20;  // consecutive calm checks = at rest
 
 // Elastic energy stored in the touching contacts (J), by the model's contact law.
 double contact_elastic_energy(const Model& m, const State& s);
-// Kinetic energy of the bodies (J), less the spin of spheres without a
-// frictional contact (above; the friction in effect, overrides included).
+// Kinetic energy of the bodies (J), less the spin of spheres that no
+// contact can brake (above; the friction in effect, overrides included).
 double packing_kinetic_energy(const World& w);
 // That kinetic energy below 1e-2 of the contacts' elastic energy.
 bool kinetic_small_against_elastic(const World& w);

@@ -46,12 +46,14 @@ namespace {
 constexpr double kEMin = 0.761;
 constexpr double kEMax = 0.840;
 
-// Three specimens of each kind. One specimen of 345 spheres is too noisy to
+// Six specimens of each kind. One specimen of 345 spheres is too noisy to
 // judge alone (measured, session 18, with the gap closed during preparation,
 // seeds 3-7): dense peaks at 2.7-4.3 % save seed 3's, whose ratio fell from
 // 0.77 at 2 % to 0.63 at 7 % and jammed back up to 0.82 at 9 %; of five
-// loose specimens, three were still at their lowest at 10 %.
-constexpr std::uint64_t kSeeds[] = {3, 4, 5};
+// loose specimens, three were still at their lowest at 10 %. Three were not
+// enough either: their means moved with any change of the engine's rounding
+// (below).
+constexpr std::uint64_t kSeeds[] = {3, 4, 5, 6, 7, 8};
 
 LabSpec sphere_spec(double deposition_friction) {
   LabSpec spec;
@@ -146,18 +148,25 @@ Mean mean_of(double deposition_friction) {
 
 }  // namespace
 
-// One test: the comparison needs both means (six runs, about 35 s each on
-// 2 threads).
+// One test: the comparison needs both means (twelve runs, about 45 s on one
+// core).
 // Measured with one specimen (seed 3, session 6): dense e = 0.759 (Dr 1.02),
 // smoothed peak 0.831 at 3.9 %, 0.508 at 10 % (39 % below the peak), cap up
 // 150 um; loose e = 0.847 (Dr -0.09), cap down to -47 um at 7 %, -21 um at
 // 10 %, smoothed maximum 0.570 at 3.9 % on a plateau (0.46-0.57 from 3.5 %
-// on), 0.545 at 10 % (4.4 % below its maximum). The three-specimen means
-// since session 18 are printed by the test.
-// "Peaks later" is read as the loose specimens not softening as the dense
-// ones do (less than half the dense mean's drop from its maximum to 10 %): a
-// loose sand has no peak, its strength is mobilised on a plateau, and the
-// strain at the maximum of a noisy plateau is noise.
+// on), 0.545 at 10 % (4.4 % below its maximum). The means are printed.
+// Means of three read with the rounding of the sphere-sphere geometry
+// changed by an ulp (three ways, seeds 3-5, 6-8, 9-11; 2026-12-07) broke
+// every claim this test made in one variant or another: the dense mean's
+// peak ranged 0.66-0.87, its drop to 10 % 0.1-37 %, the loose cap's rise
+// from a low 3-26 um, the loose mean's drop 0-17 %. Means of six, the
+// same variants (seeds 3-8 and 6-11): dense peak 0.65-0.83 at 2.0-5.9 %,
+// 13-34 % lower at 10 %, cap up 144-161 um; loose cap 9-15 um down at 1 %,
+// peak 0.54-0.59 at 7.8-10 %, cap 16-41 um down at 10 %; every claim below
+// held in each. Two claims were dropped, as no count of specimens this
+// test can afford decides them: that the loose cap rises 5 um from a low
+// point after contracting, and that the loose mean softens by less than
+// half the dense one's drop (a loose chain collapsing near 10 % drops it).
 TEST(DenseLooseShear, DenseSpecimenPeaksEarlySoftensAndDilatesLooseContractsAndPeaksLowerLater) {
   const Mean d = mean_of(0.0);
   EXPECT_GE(d.dr_min, 0.9);
@@ -167,15 +176,12 @@ TEST(DenseLooseShear, DenseSpecimenPeaksEarlySoftensAndDilatesLooseContractsAndP
 
   const Mean c = mean_of(0.5);
   EXPECT_LE(c.dr_max, 0.3);
-  // Contracts first: the cap goes down (still below its start at 1 %
-  // strain), and then dilates: it rises by more than 5 um (0.12 % of the
-  // height) from a low point. Until session 18 this read "the cap ends above
-  // its lowest point", which holds only if nothing collapses after the
-  // dilation; the three-specimen mean (Dr -0.4 to -0.1) goes down to -18 um
-  // at 3 %, up to -10.5 um at 5 %, then down to -29 um at 10 % as chains
-  // collapse.
+  // Contracts first: the cap goes down (still below its start at 1 % strain),
+  // and ends far below the dense one (less than half its rise).
   EXPECT_LT(c.dv[c.dv.size() / 10], 0.0);
-  EXPECT_GT(c.rise, 5e-6);
+  EXPECT_LT(c.dv.back(), 0.5 * d.dv.back());
+  // Peaks lower and later: a lower maximum of the mean curve, reached at a
+  // larger strain.
   EXPECT_LT(c.peak, d.peak);
-  EXPECT_LT((c.peak - c.at_end) / c.peak, 0.5 * (d.peak - d.at_end) / d.peak);
+  EXPECT_GT(c.peak_strain, d.peak_strain);
 }
