@@ -35,14 +35,17 @@ TEST(PackingDensity, SimpleCubicLatticeOfSpheres) {
   EXPECT_NEAR(void_ratio_in_region(m, s, lo, hi), 6 / std::numbers::pi - 1, 1e-12);
 }
 
-// The spheres' indices, measured once for the tests below (about 8 s), in
+// The spheres' indices, measured once for the tests below (about 25 s), in
 // an 8 x 8 x 6 d_max box: in the 6 d box of small_index_box() the bulk (1.5
 // diameters from every wall) is only 3 diameters wide and still in the
-// walls' layering (e_min 0.626 there against 0.596 here, seed 3).
+// walls' layering (e_min 0.626 there against 0.596 here, seed 3). Means of
+// three seeds: one box's bulk is one realisation (e_min 0.587-0.618 over
+// seeds 3-8, 0.585-0.627 with the sphere geometry's rounding changed).
 const IndexDensities& sphere_indices() {
   static const IndexDensities d = [] {
     IndexDensityOptions o = testing_support::small_index_box();
     o.box_diameters = 8;
+    o.seeds = 3;
     return measure_index_densities(testing_support::sphere_spec(), o);
   }();
   return d;
@@ -53,11 +56,12 @@ TEST(IndexDensities, FrictionlessSpheresReachRandomClosePacking) {
   ASSERT_TRUE(d.settled());
   // Frictionless spheres compacted: random close packing, phi = 0.64 (e =
   // 0.5625; Scott & Kilgour 1969, Torquato et al. 2000); the bulk of a small
-  // box, a size range of 0.84:0.71 and finite compaction allow phi 0.62-0.655,
-  // e 0.53-0.61. Measured (8 x 8 x 6 d_max, seed 3): e_min = 0.596 (bulk),
-  // 0.724 over the whole box.
+  // box, a size range of 0.84:0.71 and finite compaction allow phi 0.615-0.655,
+  // e 0.53-0.625 for one box (measured, 8 x 8 x 6 d_max: 0.585-0.627 over
+  // seeds 3-8 on two roundings of the engine, 0.72-0.74 over the whole box);
+  // the mean of three, 0.599-0.600 for seeds 3-5, is held to e < 0.62.
   EXPECT_GT(d.e_min, 0.53);
-  EXPECT_LT(d.e_min, 0.61);
+  EXPECT_LT(d.e_min, 0.62);
   // The whole box (cap height) is looser than the bulk: the walls.
   EXPECT_GT(d.dense.front().whole_void_ratio, d.dense.front().void_ratio + 0.05);
   // The loosest preparation is much looser than the densest (measured:
@@ -82,9 +86,9 @@ TEST(IndexDensities, FrictionalSpheresReachRandomLoosePacking) {
 // makes only the loose one and ends where the uninterrupted one did, to the
 // bit: the preparations are deterministic at a given seed.
 TEST(IndexDensities, AMeasurementGivenItsDensePreparationMakesOnlyTheLooseOne) {
-  const IndexDensities& full = sphere_indices();
   IndexDensityOptions o = testing_support::small_index_box();
   o.box_diameters = 8;
+  const IndexDensities full = measure_index_densities(testing_support::sphere_spec(), o);  // one seed
   IndexDensities done;
   done.dense = full.dense;
   int made = 0, saved = 0;
