@@ -35,7 +35,7 @@ TEST(PackingDensity, SimpleCubicLatticeOfSpheres) {
   EXPECT_NEAR(void_ratio_in_region(m, s, lo, hi), 6 / std::numbers::pi - 1, 1e-12);
 }
 
-// The spheres' indices, measured once for the tests below (about 25 s), in
+// The spheres' indices, measured once for the tests below (about 6 s), in
 // an 8 x 8 x 6 d_max box: in the 6 d box of small_index_box() the bulk (1.5
 // diameters from every wall) is only 3 diameters wide and still in the
 // walls' layering (e_min 0.626 there against 0.596 here, seed 3). Means of
