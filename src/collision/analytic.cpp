@@ -1,11 +1,23 @@
 // Closed-form narrowphase: sphere-sphere, plane-sphere, plane-polytope.
 #include "collision/narrowphase.h"
 #include "collision/soft_depth.h"
+#include "collision/sphere_pairs.h"
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
 namespace grainlab {
+
+ContactResult collide(const SphereShape& a, const SphereShape& b) {
+  static_assert(sizeof(SphereShape) == 4 * sizeof(double) && offsetof(SphereShape, radius) == 3 * sizeof(double),
+                "a SphereShape is read as x, y, z, radius");
+  const SphereXYZR pa[4] = {a.pos.data(), a.pos.data(), a.pos.data(), a.pos.data()};  // the pair in every lane
+  const SphereXYZR pb[4] = {b.pos.data(), b.pos.data(), b.pos.data(), b.pos.data()};
+  SpherePairsOut out;
+  sphere_pairs(pa, pb, out);
+  return sphere_pair_result(out, 0);
+}
 
 ContactResult collide(const PlaneShape& a, const SphereShape& b) {
   ContactResult r;

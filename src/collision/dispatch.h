@@ -12,7 +12,9 @@
 
 #include "collision/narrowphase.h"
 #include "collision/posed_shape.h"
+#include "collision/sphere_pairs.h"
 
+#include <cstddef>
 #include <string>
 
 namespace grainlab {
@@ -73,14 +75,17 @@ struct CompactPose {
   Vec3 x;
   double radius;
 };
+static_assert(sizeof(CompactPose) == 4 * sizeof(double) && offsetof(CompactPose, radius) == 3 * sizeof(double),
+              "a CompactPose is read as x, y, z, radius (sphere_pairs.h)");
 
-// The routine of a compact pair (PairNeeds::compact), with its bounding
-// spheres' test: inlined, so that where only `touching` is read nothing else
-// is computed. The same bits as the table's routine for the pair.
-[[gnu::always_inline]] inline ContactResult collide_compact(const CompactPose& a, const CompactPose& b) {
-  const double reach = a.radius + b.radius;
-  if ((b.x - a.x).squaredNorm() > reach * reach) return ContactResult{};
-  return collide(SphereShape{a.x, a.radius}, SphereShape{b.x, b.radius});
+// The routine of a compact pair (PairNeeds::compact): the same bits as the
+// table's routine for the pair (collide(), sphere_pairs.h).
+inline ContactResult collide_compact(const CompactPose& a, const CompactPose& b) {
+  const SphereXYZR pa[4] = {a.x.data(), a.x.data(), a.x.data(), a.x.data()};
+  const SphereXYZR pb[4] = {b.x.data(), b.x.data(), b.x.data(), b.x.data()};
+  SpherePairsOut out;
+  sphere_pairs(pa, pb, out);
+  return sphere_pair_result(out, 0);
 }
 
 // True if a routine (direct or flipped) exists for kinds (a, b).

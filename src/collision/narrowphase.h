@@ -8,21 +8,9 @@
 
 namespace grainlab {
 
-// Exact sphere-sphere (inline: the sphere world's narrowphase counts the
-// touching pairs with it, then computes their geometry, and the first use
-// compiles down to the depth).
-inline ContactResult collide(const SphereShape& a, const SphereShape& b) {
-  ContactResult r;
-  const Vec3 d = b.pos - a.pos;
-  const double dist = d.norm();
-  // Coincident centres: any direction is a minimum-translation direction.
-  r.normal = dist > 1e-300 ? Vec3(d / dist) : Vec3::UnitZ();
-  r.depth = a.radius + b.radius - dist;
-  r.touching = r.depth > 0;
-  // Midway between the surface point of A (a.pos + ra n) and of B (b.pos - rb n).
-  r.point = 0.5 * (a.pos + b.pos) + 0.5 * (a.radius - b.radius) * r.normal;
-  return r;
-}
+// Exact sphere-sphere (sphere_pairs.h: every sphere pair's geometry is
+// computed by one function, so that every path gives a pair the same bits).
+ContactResult collide(const SphereShape& a, const SphereShape& b);
 // Exact plane-sphere; normal = plane normal.
 ContactResult collide(const PlaneShape& a, const SphereShape& b);
 // Exact plane-polytope: the soft depth of the vertices below the plane

@@ -3,6 +3,7 @@
 
 #include "collision/dispatch.h"
 #include "collision/narrowphase.h"
+#include "collision/sphere_pairs.h"
 #include "collision/wall_bound.h"
 #include "core/parallel.h"
 
@@ -256,13 +257,20 @@ void CollisionDriver::collide_list(const CollisionStep& s, std::vector<Candidate
   if (sub_results_.size() < n * slots) sub_results_.resize(n * slots);
   sub_counts_.resize(n + 1);
   const bool compact = compact_ && !walls;
-  parallel_for(
+  if (compact)  // only counted, four pairs at a time: the fill below computes the geometry again
+    parallel_for(
+        static_cast<std::ptrdiff_t>((n + 3) / 4),
+        [&](std::ptrdiff_t g) {
+          const std::size_t k = 4 * static_cast<std::size_t>(g);
+          SpherePairsOut geo;
+          compact_group(pairs, k, geo);
+          for (std::size_t l = 0; l < 4 && k + l < n; ++l) sub_counts_[k + l] = geo.depth[l] > 0;
+        },
+        8, s.threads, s.settings.serial_below / 4);
+  else
+    parallel_for(
       static_cast<std::ptrdiff_t>(n),
       [&](std::ptrdiff_t k) {
-        if (compact) {  // only counted: the fill below computes the geometry again
-          sub_counts_[k] = collide_compact(compact_poses_[pairs[k].a], compact_poses_[pairs[k].b]).touching;
-          return;
-        }
         SubContact* out = &sub_results_[static_cast<std::size_t>(k) * slots];
         thread_local SubContact local[kMaxSubContacts];  // constructed once per thread, not per pair
         const int written = walls ? collide_wall(s, pairs[k], local) : collide_pair(s, pairs[k], local);
@@ -326,8 +334,70 @@ void CollisionDriver::collide_list(const CollisionStep& s, std::vector<Candidate
 
 void CollisionDriver::narrowphase(const CollisionStep& s) {
   collide_list(s, s.state.pairs, false, s.state.contacts);
+  narrowphase_walls(s);
+  s.profile.pair_tests += static_cast<std::int64_t>(s.state.pairs.size());
+}
+
+void CollisionDriver::narrowphase_walls(const CollisionStep& s) {
   collide_list(s, s.state.wall_pairs, true, s.state.wall_contacts);
-  s.profile.pair_tests += static_cast<std::int64_t>(s.state.pairs.size() + s.state.wall_pairs.size());
+  s.profile.pair_tests += static_cast<std::int64_t>(s.state.wall_pairs.size());
+}
+
+std::vector<Contact>& CollisionDriver::begin_compact_contacts(const CollisionStep& s) {
+  assert(compact_);
+  (void)s;
+  compact_pair_ = compact_old_ = 0;
+  next_contacts_[0].clear();  // keeps its capacity: no allocation after the first steps
+  return next_contacts_[0];
+}
+
+void CollisionDriver::compact_group(const std::vector<CandidatePair>& pairs, std::size_t k,
+                                    SpherePairsOut& geo) const {
+  SphereXYZR a[4], b[4];
+  for (std::size_t l = 0; l < 4; ++l) {
+    const CandidatePair& pair = pairs[std::min(k + l, pairs.size() - 1)];
+    a[l] = compact_poses_[pair.a].x.data();  // x, y, z, radius side by side
+    b[l] = compact_poses_[pair.b].x.data();
+  }
+  sphere_pairs(a, b, geo);
+}
+
+std::size_t CollisionDriver::more_compact_contacts(const CollisionStep& s, std::size_t want) {
+  std::vector<CandidatePair>& pairs = s.state.pairs;
+  const std::vector<Contact>& old = s.state.contacts;
+  std::vector<Contact>& next = next_contacts_[0];
+  const std::size_t n = pairs.size(), first = next.size();
+  std::size_t k = compact_pair_, o = compact_old_;
+  for (; k < n && next.size() - first < want; k += 4) {
+    SpherePairsOut geo;
+    compact_group(pairs, k, geo);
+    for (int l = 0; l < 4 && k + static_cast<std::size_t>(l) < n; ++l) {
+      CandidatePair& pair = pairs[k + static_cast<std::size_t>(l)];
+      if (!(geo.depth[l] > 0)) {
+        pair.first_contact = CandidatePair::kNoContacts;
+        continue;
+      }
+      pair.first_contact = static_cast<std::int32_t>(next.size());
+      Contact c;
+      c.a = pair.a;
+      c.b = pair.b;
+      c.sub = 0;
+      c.geo = sphere_pair_result(geo, l);
+      // The spring carried from last step's contact of the pair (the pairs and
+      // both lists ascend, so one cursor finds it).
+      while (o < old.size() && old[o] < c) ++o;
+      if (o < old.size() && old[o].same_key(c)) c.xi = old[o].xi;
+      next.push_back(c);
+    }
+  }
+  compact_pair_ = std::min(k, n), compact_old_ = o;
+  return next.size() - first;
+}
+
+void CollisionDriver::end_compact_contacts(const CollisionStep& s) {
+  assert(compact_pair_ == s.state.pairs.size());
+  s.state.contacts.swap(next_contacts_[0]);
+  s.profile.pair_tests += static_cast<std::int64_t>(s.state.pairs.size());
 }
 
 }  // namespace grainlab

@@ -16,6 +16,7 @@
 #include "collision/broadphase.h"
 #include "collision/dispatch.h"
 #include "collision/posed_shape.h"
+#include "collision/sphere_pairs.h"
 #include "dynamics/model.h"
 #include "dynamics/profile.h"
 #include "dynamics/state.h"
@@ -45,6 +46,20 @@ class CollisionDriver {
   // The touching contacts of every candidate pair, springs carried.
   void narrowphase(const CollisionStep& s);
 
+  // A world of spheres stepped serially (compact(), one thread): the same
+  // contacts, springs and bits as narrowphase(), but the grain-grain ones
+  // made a few at a time, in pair order, as the forces phase asks for them
+  // (contact_forces.h, GrainContactSource), so that each is made, pushed by
+  // the law and summed while it is in cache, and every pair is tested once:
+  //   narrowphase_walls(s);                        // the wall-grain contacts, whole
+  //   auto& list = begin_compact_contacts(s);      // the new grain contacts, empty
+  //   while (more_compact_contacts(s, k) > 0) ...  // up to k more appended to list
+  //   end_compact_contacts(s);                     // list becomes State::contacts
+  void narrowphase_walls(const CollisionStep& s);
+  std::vector<Contact>& begin_compact_contacts(const CollisionStep& s);
+  std::size_t more_compact_contacts(const CollisionStep& s, std::size_t want);
+  void end_compact_contacts(const CollisionStep& s);
+
   // Body i / wall w as the narrowphase sees it, as of the last bounds /
   // broadphase phase.
   PosedShape posed_body(const Model& model, const State& state, Index i) const;
@@ -65,6 +80,9 @@ class CollisionDriver {
   // (carry_history), else cold ones; the old pool and `pool` swap.
   void assign_piece_caches(const CollisionStep& s, std::vector<CandidatePair>& pairs, bool walls,
                            std::vector<PairCache>& pool);
+  // The geometry of compact pairs k to k + 3 (sphere_pairs.h; past the end
+  // of `pairs`, the last pair again).
+  void compact_group(const std::vector<CandidatePair>& pairs, std::size_t k, SpherePairsOut& geo) const;
   int collide_pair(const CollisionStep& s, CandidatePair& pc, SubContact* out);
   int collide_wall(const CollisionStep& s, CandidatePair& pc, SubContact* out);
   void collide_list(const CollisionStep& s, std::vector<CandidatePair>& pairs, bool walls,
@@ -92,6 +110,9 @@ class CollisionDriver {
   // The contact lists being compacted, grains' [0] and walls' [1]: one each,
   // so that neither is value-initialised anew every step after the other.
   std::vector<Contact> next_contacts_[2];
+  // The compact pass's place: the next candidate pair, and the first of last
+  // step's contacts not yet passed (both lists are sorted by (a, b)).
+  std::size_t compact_pair_ = 0, compact_old_ = 0;
 };
 
 }  // namespace grainlab

@@ -28,7 +28,7 @@ struct ContactSides {
 // four at a time (contact_lanes.h; the last block's missing lanes repeat its
 // last contact and are dropped). sides(pc) gives a contact's ContactSides.
 template <typename Law, typename Sides>
-void evaluate_block(std::vector<Contact>& list, std::size_t first, double dt, const Sides& sides) {
+[[gnu::noinline]] void evaluate_block(std::vector<Contact>& list, std::size_t first, double dt, const Sides& sides) {
   Contact* pcs[kLanes];
   Vec3 w_rel[kLanes];
   ContactLanes c;
@@ -85,7 +85,34 @@ void forces_with(const ForceStep& s, double dt, std::vector<Vec3>& force, std::v
                         (sb.v + sb.w.cross(p - sb.x)) - (sa.v + sa.w.cross(p - sa.x)), sb.w - sa.w,
                         ma.mass * mb.mass / (ma.mass + mb.mass), ma.radius * mb.radius / (ma.radius + mb.radius)};
   };
-  evaluate_all<Law>(state.contacts, dt, grain_sides, s.threads, s.serial_below);
+  // Each body's resultant starts from its weight; a grain-grain contact's
+  // force and torque are added to both of its grains, serially in contact
+  // order (so independent of the thread count).
+  const std::size_t n = state.bodies.size();
+  const Vec3 g = s.gravity;
+  for (std::size_t i = 0; i < n; ++i) {
+    force[i] = model.bodies[i].gravity_mass * g;
+    torque[i].setZero();
+  }
+  for (WallState& w : state.walls) w.force.setZero();
+  const auto add_grain_contact = [&](const Contact& pc) {
+    force[pc.b] += pc.force;
+    force[pc.a] -= pc.force;
+    torque[pc.b] += (pc.geo.point - state.bodies[pc.b].x).cross(pc.force) + pc.torque;
+    torque[pc.a] -= (pc.geo.point - state.bodies[pc.a].x).cross(pc.force) + pc.torque;
+  };
+  if (GrainContactSource* source = s.source) {
+    // Made a batch at a time: each batch pushed and summed while in cache.
+    std::vector<Contact>& list = *source->list;
+    constexpr std::size_t kBatch = 8 * kLanes;
+    for (std::size_t first = list.size(), made; (made = source->more(kBatch)) > 0; first += made) {
+      for (std::size_t k = first; k < first + made; k += kLanes) evaluate_block<Law>(list, k, dt, grain_sides);
+      for (std::size_t k = first; k < first + made; ++k) add_grain_contact(list[k]);
+    }
+  } else {
+    evaluate_all<Law>(state.contacts, dt, grain_sides, s.threads, s.serial_below);
+    for (const Contact& pc : state.contacts) add_grain_contact(pc);
+  }
 
   // Walls: infinite mass and radius, translating at their prescribed velocity.
   const auto wall_sides = [&](const Contact& pc) {
@@ -97,20 +124,6 @@ void forces_with(const ForceStep& s, double dt, std::vector<Vec3>& force, std::v
   };
   evaluate_all<Law>(state.wall_contacts, dt, wall_sides, s.threads, s.serial_below);
 
-  // Serial sums in contact order: independent of the thread count.
-  const std::size_t n = state.bodies.size();
-  const Vec3 g = s.gravity;
-  for (std::size_t i = 0; i < n; ++i) {
-    force[i] = model.bodies[i].gravity_mass * g;
-    torque[i].setZero();
-  }
-  for (WallState& w : state.walls) w.force.setZero();
-  for (const Contact& pc : state.contacts) {
-    force[pc.b] += pc.force;
-    force[pc.a] -= pc.force;
-    torque[pc.b] += (pc.geo.point - state.bodies[pc.b].x).cross(pc.force) + pc.torque;
-    torque[pc.a] -= (pc.geo.point - state.bodies[pc.a].x).cross(pc.force) + pc.torque;
-  }
   for (const Contact& pc : state.wall_contacts) {
     force[pc.b] += pc.force;
     torque[pc.b] += (pc.geo.point - state.bodies[pc.b].x).cross(pc.force) + pc.torque;

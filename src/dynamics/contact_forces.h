@@ -13,9 +13,22 @@
 #include "dynamics/state.h"
 
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 namespace grainlab {
+
+// Grain-grain contacts made during the forces phase, a few at a time (a
+// world of spheres stepped serially, CollisionDriver's compact pass):
+// more(k) appends about k contacts (a few more or fewer) to *list, in
+// contact order, and returns how many (0 when done). Each batch is pushed by
+// the law and summed before the next is made: the same arithmetic in the
+// same order as over a whole list (a contact's lanes do not mix with its
+// neighbours').
+struct GrainContactSource {
+  std::vector<Contact>* list = nullptr;
+  std::function<std::size_t(std::size_t)> more;
+};
 
 // What the forces phase reads besides the contacts: the World's pair table
 // (materials x materials, the Model's coefficients with the phase's
@@ -27,6 +40,9 @@ struct ForceStep {
   Vec3 gravity;
   int threads = 1;
   std::ptrdiff_t serial_below = 0;  // WorldSettings::serial_below
+  // Null: the grain contacts are State::contacts, made by the narrowphase;
+  // else they come from here (and the loops run serially).
+  GrainContactSource* source = nullptr;
 };
 
 // Sets every contact's force, normal force, torque and carried spring, every

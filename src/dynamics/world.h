@@ -99,7 +99,8 @@ class World {
 
  private:
   void prepare();
-  void forces(double dt);
+  // The forces phase; `source`: the grain contacts made as it goes (else State::contacts).
+  void forces(double dt, struct GrainContactSource* source);
   void integrate(double dt);
   void bookkeeping();
   void mix_pair_table();

@@ -2,8 +2,9 @@
 // other setting but what makes it tiny, as a new user would write it:
 //   test = "T"
 //   [grains] preset = "P"
-// plus a small box (5.05 x 5.05 x 3.4 mm, 6 d_max across and 4 high,
-// about 220-380 grains instead of about 1000) and a short end (1 % strain;
+// plus a small box for the faceted grains (5.05 x 5.05 x 3.4 mm, 6 d_max
+// across and 4 high, about 220-380 grains instead of about 1000; glass
+// beads keep the default box, see tiny_keys) and a short end (1 % strain;
 // one oedometer stage), loaded five times faster than the default
 // (numerics.inertial_number 0.0045; it sets only the shear and axial speeds,
 // after the specimen is prepared: at the default, the shear took about a
@@ -51,8 +52,12 @@ const std::vector<std::string> kPresets = {"glass-beads", "rounded", "sub-angula
 
 // What makes a run tiny: its box and its end.
 std::string tiny_keys(const std::string& test, const std::string& preset) {
-  std::string keys = "[box]\nlength = 5.05e-3\nwidth = 5.05e-3\nheight = 3.4e-3\n"
-                     "[numerics]\ninertial_number = 0.0045\n";
+  // Glass beads keep the default box: spheres are cheap, and in the small
+  // box one friction's packings scattered wider than the tolerance (e
+  // 0.562-0.636 between frictions 0.14 and 0.28 in one search, which then
+  // gave up after 8 trials on another rounding of the same engine).
+  std::string keys = preset == "glass-beads" ? "" : "[box]\nlength = 5.05e-3\nwidth = 5.05e-3\nheight = 3.4e-3\n";
+  keys += "[numerics]\ninertial_number = 0.0045\n";
   if (test == "direct-shear") keys += "[shear]\nfinal_strain = 0.01\n";
   if (test == "triaxial") keys += "[triaxial]\nfinal_strain = 0.01\n";
   if (test == "oedometer") keys += "[oedometer]\nstresses = [200e3]\n";

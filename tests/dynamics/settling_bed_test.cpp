@@ -85,8 +85,9 @@ TEST(SettlingBed, OneTwoAndThreeThreadsGiveIdenticalStates) {
   }
 }
 
-// A bed of spheres (every grain pair on the compact path, whose loops keep a
-// serial threshold, here 0): 1, 2 and 3 threads give the same bits.
+// A bed of spheres: on one thread the grain contacts are made inside the
+// forces phase a batch at a time (World::step's compact pass), on more in
+// two parallel passes over the pairs; the states are the same bit for bit.
 TEST(SettlingBed, SpheresOnOneTwoAndThreeThreadsGiveIdenticalStates) {
   SettlingBedSpec spec = test_bed();
   spec.grains = 400;
