@@ -138,7 +138,9 @@ TEST_F(HostileUse, AFileSizeLimitEndsARunWithAMessageAndNothingHalfWritten) {
   for (const auto& e : fs::recursive_directory_iterator(out))
     EXPECT_EQ(e.path().filename().string().find(".tmp."), std::string::npos) << e.path();
   EXPECT_NO_THROW(grainlab::load_config(out / "config.toml"));
-  if (fs::exists(out / "series.csv")) EXPECT_EQ(read_file(out / "series.csv").back(), '\n');
+  if (fs::exists(out / "series.csv")) {
+    EXPECT_EQ(read_file(out / "series.csv").back(), '\n');
+  }
   EXPECT_FALSE(fs::exists(out / "run.json"));
 }
 

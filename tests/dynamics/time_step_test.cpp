@@ -147,6 +147,8 @@ TEST(TimeStep, ConcaveGrainsStepIncludesTheContactDampingConvexOnesDoNot) {
     const double m_c = 1.0 / (b.inv_mass + b.bounding_radius * b.bounding_radius * b.inv_inertia.maxCoeff());
     const double expected = damped_critical_step(k_n, concave ? gamma_n * b.mass : 0.0, m_c);
     EXPECT_NEAR(w.critical_time_step(), expected, 1e-12 * expected) << (concave ? "concave" : "convex");
-    if (concave) EXPECT_LT(expected, 0.9 * damped_critical_step(k_n, 0.0, m_c));
+    if (concave) {
+      EXPECT_LT(expected, 0.9 * damped_critical_step(k_n, 0.0, m_c));
+    }
   }
 }

@@ -140,7 +140,9 @@ void expect_sh_preset_record(const std::string& preset, const EmbeddedIndices& r
     return t && t->key_hash == r.key_hash;
   };
   for (const char* other : {"rounded", "sh-ottawa", "sh-river", "sh-limestone"})
-    if (other != preset) EXPECT_FALSE(takes_this([&](LabSpec& s) { s.grains.preset = other; })) << other;
+    if (other != preset) {
+      EXPECT_FALSE(takes_this([&](LabSpec& s) { s.grains.preset = other; })) << other;
+    }
   EXPECT_FALSE(takes_this([](LabSpec& s) { s.grains.faces = 1000; }));
   EXPECT_FALSE(takes_this([](LabSpec& s) { s.seed = 2; }));
   EXPECT_FALSE(takes_this([](LabSpec& s) { s.numerics.time_step_fraction = 0.2; }));

@@ -113,7 +113,7 @@ TEST(LabTestSaveRestore, EveryTestsWorldTakesTheSpecsThreadCount) {
   // Set where the World is built (lab/preparation.h), never written afterwards.
   LabSpec spec = testing_support::tiny_box_spec();
   spec.numerics.threads = 3;
-  for (const std::string& name : {"direct-shear", "oedometer", "triaxial"}) {
+  for (const char* name : {"direct-shear", "oedometer", "triaxial"}) {
     std::unique_ptr<LabTest> t = make_lab_test(name, spec);
     EXPECT_EQ(t->world().settings.threads, 3) << name;
     t->advance(10);
