@@ -343,9 +343,8 @@ void CollisionDriver::narrowphase_walls(const CollisionStep& s) {
   s.profile.pair_tests += static_cast<std::int64_t>(s.state.wall_pairs.size());
 }
 
-std::vector<Contact>& CollisionDriver::begin_compact_contacts(const CollisionStep& s) {
+std::vector<Contact>& CollisionDriver::begin_compact_contacts() {
   assert(compact_);
-  (void)s;
   compact_pair_ = compact_old_ = 0;
   next_contacts_[0].clear();  // keeps its capacity: no allocation after the first steps
   return next_contacts_[0];

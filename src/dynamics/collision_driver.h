@@ -52,11 +52,11 @@ class CollisionDriver {
   // (contact_forces.h, GrainContactSource), so that each is made, pushed by
   // the law and summed while it is in cache, and every pair is tested once:
   //   narrowphase_walls(s);                        // the wall-grain contacts, whole
-  //   auto& list = begin_compact_contacts(s);      // the new grain contacts, empty
+  //   auto& list = begin_compact_contacts();       // the new grain contacts, empty
   //   while (more_compact_contacts(s, k) > 0) ...  // up to k more appended to list
   //   end_compact_contacts(s);                     // list becomes State::contacts
   void narrowphase_walls(const CollisionStep& s);
-  std::vector<Contact>& begin_compact_contacts(const CollisionStep& s);
+  std::vector<Contact>& begin_compact_contacts();
   std::size_t more_compact_contacts(const CollisionStep& s, std::size_t want);
   void end_compact_contacts(const CollisionStep& s);
 

@@ -27,6 +27,9 @@ struct ContactSides {
 // Evaluates the contact law for contacts [first, first + kLanes) of `list`,
 // four at a time (contact_lanes.h; the last block's missing lanes repeat its
 // last contact and are dropped). sides(pc) gives a contact's ContactSides.
+// Out of line: the batched sphere pass and evaluate_all call one compiled
+// body, so that both give a contact the same bits (inlined at each caller,
+// GCC may contract a*b + c into FMAs differently; collision/sphere_pairs.h).
 template <typename Law, typename Sides>
 [[gnu::noinline]] void evaluate_block(std::vector<Contact>& list, std::size_t first, double dt, const Sides& sides) {
   Contact* pcs[kLanes];

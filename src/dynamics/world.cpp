@@ -157,7 +157,7 @@ void World::step(double dt) {
   if (collisions_.compact() && serial) {
     collisions_.narrowphase_walls(collide);
     lap(Phase::Narrowphase);
-    GrainContactSource source{&collisions_.begin_compact_contacts(collide),
+    GrainContactSource source{&collisions_.begin_compact_contacts(),
                               [&](std::size_t want) { return collisions_.more_compact_contacts(collide, want); }};
     forces(dt, &source);
     collisions_.end_compact_contacts(collide);
