@@ -187,21 +187,39 @@ void World::forces(double dt, GrainContactSource* source) {
 
 void World::integrate(double dt) {
   const std::size_t n = state.bodies.size();
-  const auto body = [&](std::ptrdiff_t i) {
-    BodyState& s = state.bodies[i];
-    const BodyModel& m = model.bodies[i];
-    s.v += (m.inv_mass * dt) * force_[i];
-    s.x += dt * s.v;
-    const bool isotropic = model.shapes[m.shape].isotropic;
-    integrate_rotation(s.q, s.w, torque_[i], m.inertia, m.inv_inertia, dt, isotropic);
-    motion_[i] = s.v.squaredNorm() + s.w.squaredNorm();
+  // Bodies four at a time (fixed by index: the thread count changes
+  // nothing): a block of four spheres turns their orientations in the lanes
+  // of one register (integrator.h).
+  const auto block = [&](std::ptrdiff_t k) {
+    Quat* turned[4];
+    Vec3 phi[4];
+    int spheres = 0;
+    const std::size_t end = std::min(n, 4 * static_cast<std::size_t>(k) + 4);
+    for (std::size_t i = 4 * static_cast<std::size_t>(k); i < end; ++i) {
+      BodyState& s = state.bodies[i];
+      const BodyModel& m = model.bodies[i];
+      s.v += (m.inv_mass * dt) * force_[i];
+      s.x += dt * s.v;
+      if (model.shapes[m.shape].isotropic) {
+        spin_sphere(s.w, torque_[i], m.inv_inertia.x(), dt);
+        turned[spheres] = &s.q, phi[spheres] = s.w * dt, ++spheres;
+      } else {
+        integrate_rotation(s.q, s.w, torque_[i], m.inertia, m.inv_inertia, dt, false);
+      }
+      motion_[i] = s.v.squaredNorm() + s.w.squaredNorm();
+    }
+    if (spheres == 4) {
+      turn_spheres(turned, phi);
+    } else {
+      for (int j = 0; j < spheres; ++j) *turned[j] = (rotation_quaternion(phi[j]) * *turned[j]).normalized();
+    }
   };
   // A faceted grain's rotation (implicit midpoint, four quaternion updates)
   // costs some 280 ns, ten times a sphere's: 256 of them outweigh waking a
   // thread, so only a world of spheres (whose pairs all take the compact path,
   // collision_driver.h) keeps the serial threshold.
-  parallel_for(static_cast<std::ptrdiff_t>(n), body, 256, step_threads_,
-               collisions_.compact() ? settings.serial_below : 0);
+  parallel_for(static_cast<std::ptrdiff_t>((n + 3) / 4), block, 64, step_threads_,
+               collisions_.compact() ? settings.serial_below / 4 : 0);
   for (WallState& w : state.walls) w.x += dt * w.v;
 }
 
