@@ -180,6 +180,8 @@ def main():
     a = ap.parse_args()
     if a.quick:
         a.repeats, a.strain = 1, 0.02
+    if os.sep in a.grainlab:  # a path, not a name on PATH: the runs start in another folder
+        a.grainlab = os.path.abspath(a.grainlab)
     for exe, what in ((a.grainlab, "build it: cmake --build build --target grainlab"),
                       (a.liggghts, "install the Debian package liggghts")):
         if not shutil.which(exe) and not os.access(exe, os.X_OK):
