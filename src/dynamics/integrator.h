@@ -68,13 +68,17 @@ inline void spin_sphere(Vec3& w, const Vec3& torque, double inv_inertia, double 
   w += inv_inertia * dt * torque;
 }
 
+// A sphere's orientation q turned by the rotation vector phi = w dt, one at
+// a time (turn_spheres below: four).
+inline void turn_sphere(Quat& q, const Vec3& phi) { q = (rotation_quaternion(phi) * q).normalized(); }
+
 // Advances orientation q and world angular velocity w by dt under world torque
 // `torque`, for principal moments `inertia` (and their inverses).
 inline void integrate_rotation(Quat& q, Vec3& w, const Vec3& torque, const Vec3& inertia,
                                const Vec3& inv_inertia, double dt, bool isotropic) {
   if (isotropic) {  // spheres
     spin_sphere(w, torque, inv_inertia.x(), dt);
-    q = (rotation_quaternion(w * dt) * q).normalized();
+    turn_sphere(q, w * dt);
     return;
   }
   const Mat3 r0 = q.toRotationMatrix();
@@ -93,8 +97,8 @@ inline void integrate_rotation(Quat& q, Vec3& w, const Vec3& torque, const Vec3&
 }
 
 // Four spheres' orientations q[l] turned by the rotation vectors phi[l] (w dt
-// after spin_sphere), four lanes at a time (see the top): the same rotation
-// as integrate_rotation's, normalised without a square root.
+// after spin_sphere), four lanes at a time (see the top): turn_sphere's
+// rotation, normalised without a square root.
 inline void turn_spheres(Quat* const q[4], const Vec3 phi[4]) {
   using Lanes = double __attribute__((vector_size(32)));
   Lanes px, py, pz, qw, qx, qy, qz;
@@ -117,7 +121,7 @@ inline void turn_spheres(Quat* const q[4], const Vec3 phi[4]) {
     if (a2[l] < 1e-2 && std::abs(n2[l] - 1) < 1e-6) {
       *q[l] = Quat(w[l] * newton[l], x[l] * newton[l], y[l] * newton[l], z[l] * newton[l]);
     } else {
-      *q[l] = (rotation_quaternion(phi[l]) * *q[l]).normalized();
+      turn_sphere(*q[l], phi[l]);
     }
   }
 }

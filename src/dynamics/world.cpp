@@ -211,7 +211,7 @@ void World::integrate(double dt) {
     if (spheres == 4) {
       turn_spheres(turned, phi);
     } else {
-      for (int j = 0; j < spheres; ++j) *turned[j] = (rotation_quaternion(phi[j]) * *turned[j]).normalized();
+      for (int j = 0; j < spheres; ++j) turn_sphere(*turned[j], phi[j]);
     }
   };
   // A faceted grain's rotation (implicit midpoint, four quaternion updates)

@@ -107,7 +107,8 @@ TEST(FreeMotion, FourSpheresTurnAsOneSphereDoes) {
       const double angle = t % 7 == 0 && l == 2 ? rng.uniform(0.1, 2.0) : std::pow(10.0, rng.uniform(-12, -1.01));
       phi[l] = angle * rng.unit_vector();
       if (t % 11 == 0 && l == 1) q[l].coeffs() *= 1.5;  // not unit: the scalar path normalises it
-      ref[l] = (rotation_quaternion(phi[l]) * q[l]).normalized();
+      ref[l] = q[l];
+      turn_sphere(ref[l], phi[l]);
       ptr[l] = &q[l];
     }
     turn_spheres(ptr, phi);
