@@ -73,14 +73,10 @@ inline void spin_sphere(Vec3& w, const Vec3& torque, double inv_inertia, double 
 inline void turn_sphere(Quat& q, const Vec3& phi) { q = (rotation_quaternion(phi) * q).normalized(); }
 
 // Advances orientation q and world angular velocity w by dt under world torque
-// `torque`, for principal moments `inertia` (and their inverses).
+// `torque`, for principal moments `inertia` (and their inverses); a sphere
+// takes spin_sphere and turn_sphere (or turn_spheres) instead.
 inline void integrate_rotation(Quat& q, Vec3& w, const Vec3& torque, const Vec3& inertia,
-                               const Vec3& inv_inertia, double dt, bool isotropic) {
-  if (isotropic) {  // spheres
-    spin_sphere(w, torque, inv_inertia.x(), dt);
-    turn_sphere(q, w * dt);
-    return;
-  }
+                               const Vec3& inv_inertia, double dt) {
   const Mat3 r0 = q.toRotationMatrix();
   const Vec3 l1 = r0 * inertia.cwiseProduct(r0.transpose() * w) + torque * dt;
   Quat q1 = q;

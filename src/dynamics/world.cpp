@@ -204,7 +204,7 @@ void World::integrate(double dt) {
         spin_sphere(s.w, torque_[i], m.inv_inertia.x(), dt);
         turned[spheres] = &s.q, phi[spheres] = s.w * dt, ++spheres;
       } else {
-        integrate_rotation(s.q, s.w, torque_[i], m.inertia, m.inv_inertia, dt, false);
+        integrate_rotation(s.q, s.w, torque_[i], m.inertia, m.inv_inertia, dt);
       }
       motion_[i] = s.v.squaredNorm() + s.w.squaredNorm();
     }
