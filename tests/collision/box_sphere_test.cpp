@@ -54,7 +54,9 @@ TEST(BoxSphere, MatchesGjkEpaOnRandomPairs) {
     // point of the face gives the same translation), so the exact point is
     // checked by what defines it: on the line through the centre along the
     // normal, midway between the surfaces (c - r n and c - (r - depth) n).
-    if (std::abs(exact.depth) > 1e-9) EXPECT_LT((exact.normal - ref.normal).norm(), 5e-3) << t;
+    if (std::abs(exact.depth) > 1e-9) {
+      EXPECT_LT((exact.normal - ref.normal).norm(), 5e-3) << t;
+    }
     const Vec3 midway = sphere.pos - (radius - 0.5 * exact.depth) * exact.normal;
     EXPECT_LT((exact.point - midway).norm(), 1e-15) << t;
     EXPECT_NEAR(exact.normal.norm(), 1, 1e-14);
