@@ -16,17 +16,17 @@ Lanes load(const double* p) {  // unaligned, no aliasing assumed
   return v;
 }
 
-using Select = long long __attribute__((vector_size(32)));
-
-// Four spheres (x, y, z, r each) into lanes of x, of y, of z and of r.
+// Four spheres (x, y, z, r each) into lanes of x, of y, of z and of r
+// (__builtin_shufflevector: GCC 12 and clang alike; indices into the two
+// vectors side by side).
 void transpose(const SphereXYZR s[4], Lanes& x, Lanes& y, Lanes& z, Lanes& r) {
   const Lanes s0 = load(s[0]), s1 = load(s[1]), s2 = load(s[2]), s3 = load(s[3]);
-  const Lanes xz01 = __builtin_shuffle(s0, s1, Select{0, 4, 2, 6}), yr01 = __builtin_shuffle(s0, s1, Select{1, 5, 3, 7});
-  const Lanes xz23 = __builtin_shuffle(s2, s3, Select{0, 4, 2, 6}), yr23 = __builtin_shuffle(s2, s3, Select{1, 5, 3, 7});
-  x = __builtin_shuffle(xz01, xz23, Select{0, 1, 4, 5});
-  z = __builtin_shuffle(xz01, xz23, Select{2, 3, 6, 7});
-  y = __builtin_shuffle(yr01, yr23, Select{0, 1, 4, 5});
-  r = __builtin_shuffle(yr01, yr23, Select{2, 3, 6, 7});
+  const Lanes xz01 = __builtin_shufflevector(s0, s1, 0, 4, 2, 6), yr01 = __builtin_shufflevector(s0, s1, 1, 5, 3, 7);
+  const Lanes xz23 = __builtin_shufflevector(s2, s3, 0, 4, 2, 6), yr23 = __builtin_shufflevector(s2, s3, 1, 5, 3, 7);
+  x = __builtin_shufflevector(xz01, xz23, 0, 1, 4, 5);
+  z = __builtin_shufflevector(xz01, xz23, 2, 3, 6, 7);
+  y = __builtin_shufflevector(yr01, yr23, 0, 1, 4, 5);
+  r = __builtin_shufflevector(yr01, yr23, 2, 3, 6, 7);
 }
 
 void store(double* p, Lanes v) { std::memcpy(p, &v, sizeof v); }
