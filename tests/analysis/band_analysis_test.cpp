@@ -4,6 +4,7 @@
 // along by the box displacement, a linear ramp between.
 #include "analysis/band_analysis.h"
 #include "analysis/shear_sample.h"
+#include "displacement_field.h"
 
 #include <gtest/gtest.h>
 
@@ -14,13 +15,11 @@ using namespace grainlab::analysis;
 
 namespace {
 
-constexpr double kMm = 1e-3;
+using analysis_test::Field;
+using analysis_test::kMm;
 
 // 2000 grains evenly in reference height over (0, 10) mm; u(z) = 0 below 4 mm,
 // d above 6 mm, linear between.
-struct Field {
-  State ref, now;
-};
 Field ramp(double d) {
   Field f;
   const int n = 2000;

@@ -2,6 +2,7 @@
 // known band.
 #include "analysis/shear_band.h"
 #include "core/rng.h"
+#include "displacement_field.h"
 
 #include <gtest/gtest.h>
 
@@ -14,14 +15,12 @@ using namespace grainlab::analysis;
 
 namespace {
 
-constexpr double kMm = 1e-3;
+using analysis_test::Field;
+using analysis_test::kMm;
 
 // 4000 grains evenly spread in reference height over [-10, 10] mm (100 per
 // 0.5 mm layer, symmetric about each layer centre), scattered in x and y,
 // displaced along x by u(z) plus optional noise.
-struct Field {
-  State ref, now;
-};
 Field make_field(const std::function<double(double)>& u, double noise = 0, std::uint64_t seed = 1) {
   Rng rng(seed);
   Field f;

@@ -2,6 +2,8 @@
 // grainlab binary, read a file.
 #pragma once
 
+#include "file_text.h"
+
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -33,11 +35,6 @@ inline Result run_grainlab(const std::filesystem::path& cwd, const std::string& 
   return run_shell("cd '" + cwd.string() + "' && " + env + " '" + GRAINLAB_BINARY + "' " + args);
 }
 
-inline std::string read_file(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+inline std::string read_file(const std::filesystem::path& p) { return grainlab::test::file_text(p); }
 
 }  // namespace apps_test

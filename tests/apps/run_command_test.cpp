@@ -16,7 +16,7 @@ namespace fs = std::filesystem;
 using apps_test::Result;
 
 // Runs the grainlab binary with `args`, capturing stdout and stderr.
-Result grainlab(const std::string& args) { return apps_test::run_shell(std::string(GRAINLAB_BINARY) + " " + args); }
+Result cli(const std::string& args) { return apps_test::run_shell(std::string(GRAINLAB_BINARY) + " " + args); }
 
 class RunCommand : public ::testing::Test {
  protected:
@@ -40,7 +40,7 @@ class RunCommand : public ::testing::Test {
 };
 
 TEST_F(RunCommand, PrintDefaultsPrintsEveryTable) {
-  const Result r = grainlab("run --print-defaults");
+  const Result r = cli("run --print-defaults");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   // Every table, with units in the comments (io's tests check that it parses
   // back to the defaults field by field).
@@ -50,7 +50,7 @@ TEST_F(RunCommand, PrintDefaultsPrintsEveryTable) {
 }
 
 TEST_F(RunCommand, UnknownKeyIsNamedWithItsFile) {
-  const Result r = grainlab("run " + config("[consolidation]\nnormal_stres = 100e3\n").string());
+  const Result r = cli("run " + config("[consolidation]\nnormal_stres = 100e3\n").string());
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("normal_stres"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("normal_stress"), std::string::npos) << "should suggest the right key: " << r.output;
@@ -59,28 +59,28 @@ TEST_F(RunCommand, UnknownKeyIsNamedWithItsFile) {
 }
 
 TEST_F(RunCommand, NegativeStressIsRefused) {
-  const Result r = grainlab("run " + config("[consolidation]\nnormal_stress = -5\n").string());
+  const Result r = cli("run " + config("[consolidation]\nnormal_stress = -5\n").string());
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("consolidation.normal_stress"), std::string::npos) << r.output;
   EXPECT_TRUE(wrote_nothing());
 }
 
 TEST_F(RunCommand, StepAboveTheStableLimitIsRefused) {
-  const Result r = grainlab("run " + config("[grains]\nshapes = 2\nfaces = 200\n[numerics]\ntime_step = 1e-3\n").string());
+  const Result r = cli("run " + config("[grains]\nshapes = 2\nfaces = 200\n[numerics]\ntime_step = 1e-3\n").string());
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("critical"), std::string::npos) << r.output;
   EXPECT_TRUE(wrote_nothing());
 }
 
 TEST_F(RunCommand, MissingMeshFolderIsRefused) {
-  const Result r = grainlab("run " + config("[grains]\nfolder = \"/no/such/scan/folder\"\n").string());
+  const Result r = cli("run " + config("[grains]\nfolder = \"/no/such/scan/folder\"\n").string());
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("/no/such/scan/folder"), std::string::npos) << r.output;
   EXPECT_TRUE(wrote_nothing());
 }
 
 TEST_F(RunCommand, MissingConfigFileIsRefused) {
-  const Result r = grainlab("run " + (dir_ / "nope.toml").string());
+  const Result r = cli("run " + (dir_ / "nope.toml").string());
   EXPECT_NE(r.exit_code, 0);
   EXPECT_NE(r.output.find("nope.toml"), std::string::npos) << r.output;
 }
@@ -93,10 +93,10 @@ namespace {
 // `ct segment` a synthetic scan, then `run` with grains.scan.
 TEST_F(RunCommand, AScanIsSegmentedThenRunFromWhereItsGrainsWere) {
   const fs::path scan = dir_ / "scan.nrrd", grains = dir_ / "grains";
-  ASSERT_EQ(grainlab("ct synth --out " + scan.string()).exit_code, 0);
-  const Result seg = grainlab("ct segment " + scan.string() + " --out " + grains.string() + " --quiet");
+  ASSERT_EQ(cli("ct synth --out " + scan.string()).exit_code, 0);
+  const Result seg = cli("ct segment " + scan.string() + " --out " + grains.string() + " --quiet");
   ASSERT_EQ(seg.exit_code, 0) << seg.output;
-  const Result r = grainlab(config("[grains]\nscan = \"" + grains.string() +
+  const Result r = cli(config("[grains]\nscan = \"" + grains.string() +
                                    "\"\nscan_border = \"keep\"\n[box]\nlength = 0.0045\nwidth = 0.0045\n"
                                    "height = 0.003\n[shear]\nfinal_strain = 0.002\n").string().insert(0, "run --no-report --quiet "));
   ASSERT_EQ(r.exit_code, 0) << r.output;
@@ -109,7 +109,7 @@ TEST_F(RunCommand, AScanIsSegmentedThenRunFromWhereItsGrainsWere) {
 
 TEST_F(RunCommand, AScanFolderWithoutGrainsCsvIsRefused) {
   fs::create_directories(dir_ / "empty");
-  const Result r = grainlab("run " + config("[grains]\nscan = \"" + (dir_ / "empty").string() + "\"\n").string());
+  const Result r = cli("run " + config("[grains]\nscan = \"" + (dir_ / "empty").string() + "\"\n").string());
   EXPECT_NE(r.exit_code, 0);
   EXPECT_NE(r.output.find("no grains.csv there"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("grainlab ct segment"), std::string::npos) << r.output;
@@ -125,16 +125,16 @@ TEST_F(RunCommand, AScanFolderWithoutGrainsCsvIsRefused) {
 TEST_F(RunCommand, IndexKeepPrintsAFinishedMeasurementAndRefusesAnotherBox) {
   const std::string index = "grains index --preset glass-beads --shapes 4 --seeds 1 --height-diameters 6 --keep " +
                             (dir_ / "keep").string() + " --box-diameters ";
-  const Result first = grainlab(index + "6");
+  const Result first = cli(index + "6");
   ASSERT_EQ(first.exit_code, 0) << first.output;
   EXPECT_TRUE(fs::exists(dir_ / "keep" / "index_densities.json"));
   EXPECT_FALSE(fs::exists(dir_ / "keep" / "index_e_min_seed1.bin"));  // done: in the record
   const auto own_e_min = [](const std::string& out) { return out.substr(out.find("own_e_min"), 20); };
-  const Result again = grainlab(index + "6");
+  const Result again = cli(index + "6");
   ASSERT_EQ(again.exit_code, 0) << again.output;
   EXPECT_NE(again.output.find("already holds this measurement"), std::string::npos) << again.output;
   EXPECT_EQ(own_e_min(again.output), own_e_min(first.output));
-  const Result other = grainlab(index + "7");
+  const Result other = cli(index + "7");
   EXPECT_EQ(other.exit_code, 2) << other.output;
   EXPECT_NE(other.output.find("another box or loose friction"), std::string::npos) << other.output;
 }

@@ -22,8 +22,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Dir : core_test::TempFolder {
-  Dir() : TempFolder("bounded") {}
+struct ReadFolder : core_test::TempFolder {
+  ReadFolder() : TempFolder("bounded") {}
 };
 
 std::string refusal(const fs::path& p, std::uintmax_t limit) {
@@ -36,14 +36,14 @@ std::string refusal(const fs::path& p, std::uintmax_t limit) {
 }
 
 TEST(BoundedRead, ReadsARegularFileWhole) {
-  Dir d;
+  ReadFolder d;
   std::ofstream(d.path / "a.toml", std::ios::binary) << std::string("x = 1\n\0y", 9);
   EXPECT_EQ(read_bounded_file(d.path / "a.toml", 9, "config file"), std::string("x = 1\n\0y", 9));
   EXPECT_EQ(bounded_file_size(d.path / "a.toml", 100, "config file"), 9u);
 }
 
 TEST(BoundedRead, RefusesDevicesPipesAndFolders) {
-  Dir d;
+  ReadFolder d;
   std::string msg = refusal("/dev/zero", 1 << 20);  // grew to 24 GB before
   EXPECT_NE(msg.find("'/dev/zero' is a character device, not a regular file"), std::string::npos) << msg;
   ASSERT_EQ(::mkfifo((d.path / "fifo").c_str(), 0600), 0);
@@ -56,7 +56,7 @@ TEST(BoundedRead, RefusesDevicesPipesAndFolders) {
 }
 
 TEST(BoundedRead, RefusesAFileOverTheLimitWithTheFigureAndTheLimit) {
-  Dir d;
+  ReadFolder d;
   std::ofstream(d.path / "big.toml") << std::string(5000, 'a');
   const std::string msg = refusal(d.path / "big.toml", 4096);
   EXPECT_NE(msg.find("big.toml"), std::string::npos) << msg;

@@ -24,8 +24,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Dir : core_test::TempFolder {
-  Dir() : TempFolder("lock") {}
+struct LockFolder : core_test::TempFolder {
+  LockFolder() : TempFolder("lock") {}
 };
 
 std::string refusal(const fs::path& folder) {
@@ -38,7 +38,7 @@ std::string refusal(const fs::path& folder) {
 }
 
 TEST(FolderLock, ASecondHolderIsRefusedNamingTheFolderAndTheFirst) {
-  Dir d;
+  LockFolder d;
   const fs::path out = d.path / "run";
   {
     FolderLock first(out, "grainlab run");
@@ -53,7 +53,7 @@ TEST(FolderLock, ASecondHolderIsRefusedNamingTheFolderAndTheFirst) {
 }
 
 TEST(FolderLock, AKilledHoldersLockIsNotStale) {
-  Dir d;
+  LockFolder d;
   const fs::path out = d.path / "run";
   int ready[2];
   ASSERT_EQ(::pipe(ready), 0);
@@ -78,7 +78,7 @@ TEST(FolderLock, AKilledHoldersLockIsNotStale) {
 }
 
 TEST(FolderLock, AFolderWithNothingButTheLockIsRemovedAgain) {
-  Dir d;
+  LockFolder d;
   { FolderLock refused_run(d.path / "new", "grainlab run"); }
   EXPECT_FALSE(fs::exists(d.path / "new"));
   fs::create_directories(d.path / "kept");
@@ -87,7 +87,7 @@ TEST(FolderLock, AFolderWithNothingButTheLockIsRemovedAgain) {
 }
 
 TEST(FolderLock, AFileInTheWayIsRefusedAsInput) {
-  Dir d;
+  LockFolder d;
   std::ofstream(d.path / "file") << "x";
   try {
     FolderLock l(d.path / "file", "grainlab run");

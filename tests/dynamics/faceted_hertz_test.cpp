@@ -24,7 +24,7 @@ namespace {
 
 constexpr double kR = 1e-3;  // sphere radius (m)
 
-Material glass() {
+Material elastic_glass() {
   Material m;
   m.density = 2500;
   m.youngs_modulus = 1e8;
@@ -66,7 +66,7 @@ struct HertzError {
 // polytope may not touch at all: 0.015 R at 200 faces, 1.5e-4 R at 20000.)
 HertzError hertz_error(int points, bool two) {
   const Tessellated t = tessellated_sphere(points);
-  const Material mat = glass();
+  const Material mat = elastic_glass();
   const double e_star = 1.0 / (2 * (1 - mat.poisson_ratio * mat.poisson_ratio) / mat.youngs_modulus);
   const double r_star = two ? 0.5 * t.radius : t.radius;
   World w;

@@ -15,7 +15,7 @@ using namespace grainlab;
 
 namespace {
 
-Material soft() {
+Material soft_rough() {
   Material m;
   m.youngs_modulus = 1e7;
   m.restitution = 0.2;
@@ -33,7 +33,7 @@ void settle(World& w, double seconds) {
 
 TEST(Walls, ConvexGrainRestingOnABoxWallLoadsItWithItsWeight) {
   World w;
-  const Index m = w.model.add_material(soft());
+  const Index m = w.model.add_material(soft_rough());
   const Index s = w.model.add_mesh_shape(icosphere(1e-3, 3), "ball");
   w.add_body(s, m, 1.0, Vec3(0, 0, 1.0005e-3));
   w.add_box_wall(Vec3(0, 0, -1e-3), Vec3(5e-3, 5e-3, 1e-3), Quat::Identity(), m, "slab");
@@ -51,7 +51,7 @@ TEST(Walls, SphereOnARotatedBoxWallAgreesWithAPlane) {
   double heights[2];
   for (int k = 0; k < 2; ++k) {
     World w;
-    Material mat = soft();
+    Material mat = soft_rough();
     mat.friction = 2.0;  // sticks on the slope
     const Index m = w.model.add_material(mat);
     w.add_body(w.model.add_sphere_shape(1e-3), m, 1.0, up * 1.0001e-3);
@@ -71,7 +71,7 @@ TEST(Walls, MovingWallKicksAGrainWithRestitution) {
   // frictionless floor. In the wall's frame the sphere arrives at -u and
   // leaves at +e u: in the lab it moves off at (1 + e) u, ahead of the wall.
   World w;
-  Material mat = soft();
+  Material mat = soft_rough();
   mat.friction = 0;
   const Index m = w.model.add_material(mat);
   w.add_body(w.model.add_sphere_shape(1e-3), m, 1.0, Vec3(0, 0, 1e-3));
@@ -117,7 +117,7 @@ TEST(Walls, KeptWallCandidatesOfSpheresFindEveryWallContactOfBruteForce) {
   // Grains flying about in a box whose walls shake; one wall is moved by hand
   // by 1.9 skins again and again, and one is turned.
   World w;
-  Material mat = soft();
+  Material mat = soft_rough();
   mat.youngs_modulus = 1e8;
   const Index m = w.model.add_material(mat);
   std::uint64_t seed = 12345;
@@ -160,7 +160,7 @@ TEST(Walls, KeptWallCandidatesOfSpheresFollowAWallMovedInSmallSteps) {
   // the half skin that finds the candidates again, so only the wall's own
   // displacement since they were found can tell.
   World w;
-  const Index m = w.model.add_material(soft());
+  const Index m = w.model.add_material(soft_rough());
   w.model.gravity = Vec3::Zero();
   const double r = 0.5e-3;
   for (int i = 0; i < 40; ++i) w.add_body(w.model.add_sphere_shape(r), m, 1.0, Vec3(0, 0, 2.5 * r * i));

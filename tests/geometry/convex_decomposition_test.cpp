@@ -10,6 +10,7 @@
 #include "geometry/convex_hull.h"
 #include "geometry/primitives.h"
 #include "grains/generator.h"
+#include "test_helpers.h"
 
 #include <gtest/gtest.h>
 
@@ -49,10 +50,7 @@ bool covered(const std::vector<Planes>& pieces, const Vec3& x, double tol) {
   return false;
 }
 
-// A U in the xy plane, 6 wide and 3 high, bars 1 thick, 2 deep along z.
-TriMesh u_prism() {
-  return prism_mesh({{-3, 0}, {3, 0}, {3, 3}, {2, 3}, {2, 1}, {-2, 1}, {-2, 3}, {-3, 3}}, 1.0);
-}
+using test::u_prism;
 
 }  // namespace
 

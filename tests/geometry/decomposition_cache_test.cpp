@@ -4,6 +4,7 @@
 // differs in one bit, or other options, is decomposed anew.
 #include "geometry/decomposition_cache.h"
 #include "geometry/primitives.h"
+#include "test_helpers.h"
 
 #include <gtest/gtest.h>
 
@@ -13,10 +14,7 @@ using namespace grainlab;
 
 namespace {
 
-// A U in the xy plane (concave: several pieces).
-TriMesh u_prism() {
-  return prism_mesh({{-3, 0}, {3, 0}, {3, 3}, {2, 3}, {2, 1}, {-2, 1}, {-2, 3}, {-3, 3}}, 1.0);
-}
+using test::u_prism;
 
 void expect_same_bits(const ConvexDecomposition& a, const ConvexDecomposition& b) {
   ASSERT_EQ(a.pieces.size(), b.pieces.size());

@@ -13,8 +13,6 @@
 namespace grainlab {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 // Largest entry of |a - b| relative to the largest entry of |b|.
 double rel_err(const Mat3& a, const Mat3& b) { return (a - b).cwiseAbs().maxCoeff() / b.cwiseAbs().maxCoeff(); }
 double rel_err(const Vec3& a, const Vec3& b) { return (a - b).norm() / b.norm(); }
@@ -137,7 +135,7 @@ TEST(MassProperties, ArbitraryTetrahedronMatchesTonon) {
 }
 
 TEST(MassProperties, SphereConvergesMonotonically) {
-  const double r = 0.7, v = 4.0 / 3.0 * kPi * r * r * r, i = 0.4 * v * r * r;
+  const double r = 0.7, v = 4.0 / 3.0 * std::numbers::pi * r * r * r, i = 0.4 * v * r * r;
   double last_v = INFINITY, last_i = INFINITY;
   for (int s = 1; s <= 6; ++s) {
     const MassProperties mp = mass_properties(icosphere(r, s));
@@ -154,7 +152,7 @@ TEST(MassProperties, SphereConvergesMonotonically) {
 }
 
 TEST(MassProperties, EllipsoidConvergesMonotonically) {
-  const double a = 1.0, b = 0.7, c = 0.4, v = 4.0 / 3.0 * kPi * a * b * c;
+  const double a = 1.0, b = 0.7, c = 0.4, v = 4.0 / 3.0 * std::numbers::pi * a * b * c;
   const Mat3 I = Vec3(v * (b * b + c * c) / 5, v * (a * a + c * c) / 5, v * (a * a + b * b) / 5).asDiagonal();
   double last_v = INFINITY, last_i = INFINITY;
   for (int s = 1; s <= 6; ++s) {

@@ -1,7 +1,9 @@
-// Shared helpers for the geometry tests: temporary directories and error text.
+// Shared helpers for the geometry tests: temporary directories, error text
+// and a concave test mesh.
 #pragma once
 
 #include "core/error.h"
+#include "geometry/primitives.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -41,6 +43,12 @@ std::string input_error_of(F&& f) {
     return e.what();
   }
   return "(no InputError)";
+}
+
+// A U in the xy plane, 6 wide and 3 high, bars 1 thick, 2 deep along z
+// (concave: several convex pieces).
+inline TriMesh u_prism() {
+  return prism_mesh({{-3, 0}, {3, 0}, {3, 3}, {2, 3}, {2, 1}, {-2, 1}, {-2, 3}, {-3, 3}}, 1.0);
 }
 
 }  // namespace grainlab::test

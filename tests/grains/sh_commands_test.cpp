@@ -6,6 +6,7 @@
 #include "geometry/primitives.h"
 #include "geometry/shape_metrics.h"
 #include "geometry/test_helpers.h"
+#include "file_text.h"
 #include "grains/grain_set.h"
 #include "grains/sh_grain.h"
 #include "grains/sh_test_shapes.h"
@@ -19,13 +20,6 @@
 
 namespace grainlab {
 namespace {
-
-std::string slurp(const std::filesystem::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 // Runs `grainlab ARGS`, output to dir/log.txt; returns the exit status.
 int grainlab(const test::TempDir& dir, const std::string& args) {
@@ -47,8 +41,8 @@ TEST(ShCommands, ImportWritesMetreMeshesAndRefusesABadFileWritingNothing) {
   write_sh_file(test::lumpy_grain(8), dir / "in" / "lumpy.dat");
   ASSERT_EQ(grainlab(dir, "grains import " + (dir / "in").string() + " --faces 1000 --out " + (dir / "out").string()),
             0)
-      << slurp(dir / "log.txt");
-  EXPECT_CONTAINS(slurp(dir / "log.txt"), "wrote 2 grains (1000 faces each");
+      << test::file_text(dir / "log.txt");
+  EXPECT_CONTAINS(test::file_text(dir / "log.txt"), "wrote 2 grains (1000 faces each");
   const TriMesh e = load_mesh(dir / "out" / "ellipsoid.stl");
   EXPECT_EQ(e.faces.size(), 1000u);
   EXPECT_NEAR(mass_properties(e).volume / (4.0 / 3 * std::numbers::pi * 0.48e-9), 1, 0.01);  // mm -> m
@@ -61,7 +55,7 @@ TEST(ShCommands, ImportWritesMetreMeshesAndRefusesABadFileWritingNothing) {
   // One bad file among good ones: the error names it and its line; no folder is made.
   std::ofstream(dir / "in" / "zz-bad.dat") << "   0   0        1.0000000000        0.0000000000\n   1   1   0.5\n";
   EXPECT_NE(grainlab(dir, "grains import " + (dir / "in").string() + " --out " + (dir / "out2").string()), 0);
-  EXPECT_CONTAINS(slurp(dir / "log.txt"), "zz-bad.dat:2: expected four numbers");
+  EXPECT_CONTAINS(test::file_text(dir / "log.txt"), "zz-bad.dat:2: expected four numbers");
   EXPECT_FALSE(std::filesystem::exists(dir / "out2"));
 }
 
@@ -70,8 +64,8 @@ TEST(ShCommands, StatsMeasureShFilesInTheGivenUnit) {
   ShCoefficients ball(0);
   ball.at(0, 0) = std::sqrt(4 * std::numbers::pi) * 500;  // r = 500 um
   write_sh_file(ball, dir / "ball.dat");
-  ASSERT_EQ(grainlab(dir, "grains stats " + (dir / "ball.dat").string() + " --unit 1e-6"), 0) << slurp(dir / "log.txt");
-  const std::string out = slurp(dir / "log.txt");
+  ASSERT_EQ(grainlab(dir, "grains stats " + (dir / "ball.dat").string() + " --unit 1e-6"), 0) << test::file_text(dir / "log.txt");
+  const std::string out = test::file_text(dir / "log.txt");
   EXPECT_CONTAINS(out, "ball.dat,");
   EXPECT_CONTAINS(out, "equivalent diameter 1.000 mm");
 }
@@ -82,8 +76,8 @@ TEST(ShCommands, FitShWritesAFileTheReaderReadsBack) {
   TriMesh m = sh_mesh(c, 8000, "lumpy");
   for (Vec3& v : m.vertices) v *= 1e-3;  // mm -> m
   write_stl(m, dir / "lumpy.stl");
-  ASSERT_EQ(grainlab(dir, "grains fit-sh " + (dir / "lumpy.stl").string() + " --degree 8"), 0) << slurp(dir / "log.txt");
-  const std::string log = slurp(dir / "log.txt");
+  ASSERT_EQ(grainlab(dir, "grains fit-sh " + (dir / "lumpy.stl").string() + " --degree 8"), 0) << test::file_text(dir / "log.txt");
+  const std::string log = test::file_text(dir / "log.txt");
   EXPECT_CONTAINS(log, "fitted degree 8");
   EXPECT_CONTAINS(log, "RMS radial error");
   const ShCoefficients back = read_sh_file(dir / "lumpy.dat");  // default: the mesh's name, millimetres
@@ -92,7 +86,7 @@ TEST(ShCommands, FitShWritesAFileTheReaderReadsBack) {
   // A mesh that is not star-shaped: refused, with the direction.
   write_stl(prism_like_u(), dir / "u.stl");
   EXPECT_NE(grainlab(dir, "grains fit-sh " + (dir / "u.stl").string()), 0);
-  EXPECT_CONTAINS(slurp(dir / "log.txt"), "not star-shaped about its centroid");
+  EXPECT_CONTAINS(test::file_text(dir / "log.txt"), "not star-shaped about its centroid");
   EXPECT_FALSE(std::filesystem::exists(dir / "u.dat"));
 }
 
@@ -107,8 +101,8 @@ TEST(ShCommands, SpectrumOfASetWritesTomlWithAmplitudesAndShapeStatistics) {
   ASSERT_EQ(grainlab(dir, "grains spectrum " + (dir / "ball.dat").string() + " " + (dir / "egg.dat").string() +
                               " --out " + (dir / "sand.toml").string()),
             0)
-      << slurp(dir / "log.txt");
-  const std::string toml = slurp(dir / "sand.toml");
+      << test::file_text(dir / "log.txt");
+  const std::string toml = test::file_text(dir / "sand.toml");
   EXPECT_CONTAINS(toml, "grains = 2\ndegree = 4\n");
   EXPECT_CONTAINS(toml, "mean = [1, 0, 0.05, 0, 0]");
   EXPECT_CONTAINS(toml, "std = [0, 0, 0.0707107, 0, 0]");
@@ -116,14 +110,14 @@ TEST(ShCommands, SpectrumOfASetWritesTomlWithAmplitudesAndShapeStatistics) {
                           "flatness = {", "convexity = {"}) {
     EXPECT_CONTAINS(toml, key);
   }
-  EXPECT_CONTAINS(slurp(dir / "log.txt"), "A_n/A_0 at n = 2, 5, 10, 20: 0.0500, -, -, -");
+  EXPECT_CONTAINS(test::file_text(dir / "log.txt"), "A_n/A_0 at n = 2, 5, 10, 20: 0.0500, -, -, -");
   // Degrees above --max-degree are left out, of the spectrum and of the meshes.
   ASSERT_EQ(grainlab(dir, "grains spectrum " + (dir / "egg.dat").string() + " --max-degree 1 --out " +
                               (dir / "smooth.toml").string()),
             0)
-      << slurp(dir / "log.txt");
-  EXPECT_CONTAINS(slurp(dir / "smooth.toml"), "degree = 1\n");
-  EXPECT_CONTAINS(slurp(dir / "smooth.toml"), "sphericity = { mean = 0.99");  // the egg's a_20 is gone: a ball
+      << test::file_text(dir / "log.txt");
+  EXPECT_CONTAINS(test::file_text(dir / "smooth.toml"), "degree = 1\n");
+  EXPECT_CONTAINS(test::file_text(dir / "smooth.toml"), "sphericity = { mean = 0.99");  // the egg's a_20 is gone: a ball
 }
 
 TEST(ShCommands, AGrainFolderOfShFilesIsAGrainSet) {
@@ -156,45 +150,45 @@ TEST(ShCommands, GenerateFromASpectrumWritesTheSameGrainsForTheSameSeedAndRefuse
   ASSERT_EQ(grainlab(dir, "grains spectrum " + (dir / "a.dat").string() + " " + (dir / "b.dat").string() +
                               " --faces 500 --out " + spectrum),
             0)
-      << slurp(dir / "log.txt");
+      << test::file_text(dir / "log.txt");
   const std::string args = "grains generate --spectrum " + spectrum + " --count 3 --faces 300 --seed 4 --out ";
-  ASSERT_EQ(grainlab(dir, args + (dir / "one").string()), 0) << slurp(dir / "log.txt");
-  const std::string log = slurp(dir / "log.txt");
+  ASSERT_EQ(grainlab(dir, args + (dir / "one").string()), 0) << test::file_text(dir / "log.txt");
+  const std::string log = test::file_text(dir / "log.txt");
   EXPECT_CONTAINS(log, "wrote 3 grains of degree 6 drawn from");
   EXPECT_CONTAINS(log, "roundness");
   ASSERT_EQ(grainlab(dir, args + (dir / "two").string()), 0);
   for (const char* f : {"sh-0001.stl", "sh-0002.stl", "sh-0003.stl"}) {
-    EXPECT_EQ(slurp(dir / "one" / f), slurp(dir / "two" / f)) << f;
+    EXPECT_EQ(test::file_text(dir / "one" / f), test::file_text(dir / "two" / f)) << f;
     EXPECT_EQ(load_mesh(dir / "one" / f).faces.size(), 300u);
   }
   // The file holds the set's shape model, which generate uses unless told otherwise.
-  EXPECT_CONTAINS(slurp(dir / "sand.toml"), "[model]\n");
+  EXPECT_CONTAINS(test::file_text(dir / "sand.toml"), "[model]\n");
   EXPECT_CONTAINS(log, "by the shape-model method");
   ASSERT_EQ(grainlab(dir, args + (dir / "phases").string() + " --method random-phase"), 0);
-  EXPECT_CONTAINS(slurp(dir / "log.txt"), "by the random-phase method");
-  EXPECT_NE(slurp(dir / "one" / "sh-0001.stl"), slurp(dir / "phases" / "sh-0001.stl"));
+  EXPECT_CONTAINS(test::file_text(dir / "log.txt"), "by the random-phase method");
+  EXPECT_NE(test::file_text(dir / "one" / "sh-0001.stl"), test::file_text(dir / "phases" / "sh-0001.stl"));
   // Without a model (an older file), random-phase is the default and shape-model is refused.
   const std::string plain = (dir / "plain.toml").string();
   ASSERT_EQ(grainlab(dir, "grains spectrum " + (dir / "a.dat").string() + " " + (dir / "b.dat").string() +
                               " --faces 500 --model-degree -1 --out " + plain),
             0);
-  EXPECT_EQ(slurp(plain).find("[model]"), std::string::npos);
+  EXPECT_EQ(test::file_text(plain).find("[model]"), std::string::npos);
   const std::string plain_args = "grains generate --spectrum " + plain + " --count 3 --faces 300 --seed 4 --out ";
   ASSERT_EQ(grainlab(dir, plain_args + (dir / "old").string()), 0);
-  EXPECT_CONTAINS(slurp(dir / "log.txt"), "by the random-phase method");
-  EXPECT_EQ(slurp(dir / "old" / "sh-0001.stl"), slurp(dir / "phases" / "sh-0001.stl"));
+  EXPECT_CONTAINS(test::file_text(dir / "log.txt"), "by the random-phase method");
+  EXPECT_EQ(test::file_text(dir / "old" / "sh-0001.stl"), test::file_text(dir / "phases" / "sh-0001.stl"));
   EXPECT_NE(grainlab(dir, plain_args + (dir / "four").string() + " --method shape-model"), 0);
-  EXPECT_CONTAINS(slurp(dir / "log.txt"), "needs a spectrum with a [model]");
+  EXPECT_CONTAINS(test::file_text(dir / "log.txt"), "needs a spectrum with a [model]");
   EXPECT_NE(grainlab(dir, args + (dir / "three").string() + " --preset rounded"), 0);
-  EXPECT_CONTAINS(slurp(dir / "log.txt"), "excludes");
+  EXPECT_CONTAINS(test::file_text(dir / "log.txt"), "excludes");
   EXPECT_NE(grainlab(dir, args + (dir / "three").string() + " --roundness 0.5"), 0);
   EXPECT_NE(grainlab(dir, "grains generate --spectrum " + (dir / "none.toml").string() + " --out " +
                               (dir / "three").string()),
             0);
-  EXPECT_CONTAINS(slurp(dir / "log.txt"), "does not exist");
+  EXPECT_CONTAINS(test::file_text(dir / "log.txt"), "does not exist");
   EXPECT_FALSE(std::filesystem::exists(dir / "three"));
   EXPECT_NE(grainlab(dir, "grains generate --out " + (dir / "three").string()), 0);
-  EXPECT_CONTAINS(slurp(dir / "log.txt"), "needs --preset NAME or --spectrum SAND.toml");
+  EXPECT_CONTAINS(test::file_text(dir / "log.txt"), "needs --preset NAME or --spectrum SAND.toml");
 }
 
 }  // namespace

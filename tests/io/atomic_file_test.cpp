@@ -4,6 +4,7 @@
 
 #include "core/error.h"
 #include "io_test_helpers.h"
+#include "file_text.h"
 
 #include <gtest/gtest.h>
 
@@ -17,13 +18,6 @@
 namespace grainlab {
 namespace {
 
-std::string slurp(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 std::size_t files_in(const std::filesystem::path& dir) {
   std::size_t n = 0;
   for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(dir)) ++n;
@@ -36,9 +30,9 @@ TEST(AtomicFile, WritesTheWholeFileAndReplacesAnOldOne) {
   std::string big(1 << 20, 'x');
   big[12345] = '\0';  // binary-safe
   write_file_atomically(file, big);
-  EXPECT_EQ(slurp(file), big);
+  EXPECT_EQ(test::file_text(file), big);
   write_file_atomically(file, "short\n");
-  EXPECT_EQ(slurp(file), "short\n");
+  EXPECT_EQ(test::file_text(file), "short\n");
   EXPECT_EQ(files_in(dir.path), 1u);  // no temporary left over
 }
 
@@ -73,7 +67,7 @@ TEST(AtomicFile, FailedWriteRemovesTheTemporaryAndKeepsTheOldFile) {
   EXPECT_NE(msg.find(file.string()), std::string::npos) << msg;
   EXPECT_NE(msg.find("File too large"), std::string::npos) << msg;
   EXPECT_NE(msg.find("ulimit -f"), std::string::npos) << msg;
-  EXPECT_EQ(slurp(file), "old");
+  EXPECT_EQ(test::file_text(file), "old");
   EXPECT_EQ(files_in(dir.path), 1u);
 }
 

@@ -27,7 +27,7 @@ std::string parse_error(const std::string& text) {
   return error_of<InputError>([&] { parse_config(text, "test.toml"); });
 }
 
-bool has(const std::string& msg, const std::string& part) { return msg.find(part) != std::string::npos; }
+using test::has;
 
 TEST(Config, DefaultConfigParsesToTheDefaults) {
   const std::string text = default_config_toml();

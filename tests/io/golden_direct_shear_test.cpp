@@ -15,6 +15,7 @@
 #include "io/table.h"
 #include "lab/direct_shear.h"
 #include "lab/tiny_box.h"
+#include "file_text.h"
 
 #include <gtest/gtest.h>
 
@@ -80,13 +81,6 @@ std::uint64_t physics_hash(const State& s) {
   return h.h;
 }
 
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 void write_text(const fs::path& p, const std::string& text) {
   fs::create_directories(p.parent_path());
   std::ofstream(p, std::ios::binary) << text;
@@ -116,10 +110,10 @@ TEST(GoldenDirectShear, ReproducesSeriesAndFinalStateBitForBit) {
   }
   ASSERT_TRUE(fs::exists(kGoldenDir / "direct_shear_series.csv"))
       << "no golden files: run once with GRAINLAB_BLESS=1";
-  const std::string golden_csv = read_text(kGoldenDir / "direct_shear_series.csv");
+  const std::string golden_csv = test::file_text(kGoldenDir / "direct_shear_series.csv");
   EXPECT_EQ(csv.size(), golden_csv.size());
   EXPECT_TRUE(csv == golden_csv) << "series.csv differs from " << (kGoldenDir / "direct_shear_series.csv").string();
-  EXPECT_EQ(hash, read_text(kGoldenDir / "direct_shear_state_hash.txt"));
+  EXPECT_EQ(hash, test::file_text(kGoldenDir / "direct_shear_state_hash.txt"));
 }
 
 }  // namespace

@@ -51,6 +51,9 @@ std::string error_of(const std::function<void()>& f) {
   return "";
 }
 
+// True if `msg` contains `part`.
+inline bool has(const std::string& msg, const std::string& part) { return msg.find(part) != std::string::npos; }
+
 // Every field of two specs, one by one (written out by hand so that a field
 // missing from the config key list shows up here).
 inline void expect_same_spec(const LabSpec& a, const LabSpec& b) {

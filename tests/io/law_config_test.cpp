@@ -17,11 +17,11 @@ namespace {
 
 using test::error_of;
 
-std::string parse_error(const std::string& text) {
+std::string law_parse_error(const std::string& text) {
   return error_of<InputError>([&] { parse_config(text, "law.toml"); });
 }
 
-bool has(const std::string& msg, const std::string& part) { return msg.find(part) != std::string::npos; }
+using test::has;
 
 TEST(LawConfig, LawTablesAndFlatKeysGiveTheSameSpec) {
   const LabSpec flat = parse_config(
@@ -70,22 +70,22 @@ TEST(LawConfig, DefaultConfigOfAnotherLaw) {
 }
 
 TEST(LawConfig, TheLawsRuleNamesKeyLineAndRange) {
-  std::string msg = parse_error("[material.hertz-material]\nrestitution = 0\n");
+  std::string msg = law_parse_error("[material.hertz-material]\nrestitution = 0\n");
   EXPECT_TRUE(has(msg, "law.toml (line 2): material.restitution = 0 is impossible: it must be in (0, 1]")) << msg;
-  msg = parse_error("[material]\ncontact_law = \"hooke\"\n[material.hooke]\nk_t = -3\n");
+  msg = law_parse_error("[material]\ncontact_law = \"hooke\"\n[material.hooke]\nk_t = -3\n");
   EXPECT_TRUE(has(msg, "law.toml (line 4): material.k_t = -3 is impossible: it must be >= 0 (N/m)")) << msg;
 }
 
 TEST(LawConfig, BadLawTablesAreRefused) {
-  std::string msg = parse_error("[material.mindlin]\nk_n = 1\n");
+  std::string msg = law_parse_error("[material.mindlin]\nk_n = 1\n");
   EXPECT_TRUE(has(msg, "unknown table [material.mindlin]")) << msg;
   EXPECT_TRUE(has(msg, "\"hertz-material\"")) << msg;
-  msg = parse_error("[material.hooke]\nyoungs_modulus = 1e9\n");
+  msg = law_parse_error("[material.hooke]\nyoungs_modulus = 1e9\n");
   EXPECT_TRUE(has(msg, "law.toml (line 2): unknown key 'youngs_modulus' in [material.hooke]")) << msg;
   EXPECT_TRUE(has(msg, "k_n, k_t, gamma_n, gamma_t")) << msg;
-  msg = parse_error("[material]\nk_n = 1e9\n[material.hertz]\nk_n = 2e9\n");
+  msg = law_parse_error("[material]\nk_n = 1e9\n[material.hertz]\nk_n = 2e9\n");
   EXPECT_TRUE(has(msg, "law.toml (line 4): material.k_n is given twice (also on line 2)")) << msg;
-  msg = parse_error("[material]\ncontact_law = \"hooke\"\n[material.hooke]\nk_n = \"stiff\"\n");
+  msg = law_parse_error("[material]\ncontact_law = \"hooke\"\n[material.hooke]\nk_n = \"stiff\"\n");
   EXPECT_TRUE(has(msg, "law.toml (line 4): material.k_n expects a number")) << msg;
 }
 

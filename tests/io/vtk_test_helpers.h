@@ -1,7 +1,8 @@
-// Helpers for the VTK io tests: bitwise array comparison, a file's text, and
-// xmllint when the machine has it.
+// Helpers for the VTK io tests: bitwise array comparison, a file's text
+// (file_text.h), and xmllint when the machine has it.
 #pragma once
 
+#include "file_text.h"
 #include "io/vtk_writer.h"
 
 #include <gtest/gtest.h>
@@ -30,13 +31,6 @@ inline ::testing::AssertionResult same_bits(const VtkArray& a, const VtkArray& b
         return ::testing::AssertionSuccess();
       },
       a.values);
-}
-
-inline std::string file_text(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
 }
 
 // True if xmllint can be run here.

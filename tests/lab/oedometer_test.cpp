@@ -12,14 +12,14 @@
 #include <vector>
 
 using namespace grainlab;
-using C = OedometerColumn;
+using OC = OedometerColumn;
 
 namespace {
 
 // A row in oedometer_series_columns() order with the columns the summary reads.
 std::vector<double> row(double target, double stress, double k0, double strain, double e, double modulus) {
   std::vector<double> r(oedometer_series_columns().size(), 0.0);
-  r[C::Target] = target, r[C::Vertical] = stress, r[C::K0] = k0, r[C::Strain] = strain, r[C::VoidRatio] = e, r[C::Modulus] = modulus;
+  r[OC::Target] = target, r[OC::Vertical] = stress, r[OC::K0] = k0, r[OC::Strain] = strain, r[OC::VoidRatio] = e, r[OC::Modulus] = modulus;
   return r;
 }
 
@@ -49,19 +49,19 @@ TEST(Oedometer, SummaryOfAKnownCompressionLaw) {
   std::vector<std::vector<double>> rows;
   const auto add = [&](double target, double e) {
     const double eps = c * std::pow(target, 2.0 / 3.0);
-    const double m = rows.empty() ? NAN : (target - rows.back()[C::Vertical]) / (eps - rows.back()[C::Strain]);
+    const double m = rows.empty() ? NAN : (target - rows.back()[OC::Vertical]) / (eps - rows.back()[OC::Strain]);
     rows.push_back(row(target, target, 0.5, eps, e, m));
-    rows.back()[C::Stage] = static_cast<double>(rows.size() - 1);  // one row per stage
+    rows.back()[OC::Stage] = static_cast<double>(rows.size() - 1);  // one row per stage
   };
   for (double s : {100e3, 200e3, 400e3, 800e3}) add(s, e0 - 0.05 * std::log10(s / 100e3));
-  const double e800 = rows.back()[C::VoidRatio];
+  const double e800 = rows.back()[OC::VoidRatio];
   for (double s : {400e3, 200e3}) add(s, e800 + 0.01 * std::log10(800e3 / s));
   const OedometerSummary o = summarise_oedometer(rows);
   EXPECT_NEAR(o.compression_index, 0.05, 1e-12);
   EXPECT_NEAR(o.swelling_index, 0.01, 1e-12);
   EXPECT_EQ(o.max_stress, 800e3);
   EXPECT_NEAR(o.modulus_stress_exponent, 1.0 / 3.0, 1e-12);
-  EXPECT_EQ(o.final_void_ratio, rows.back()[C::VoidRatio]);
+  EXPECT_EQ(o.final_void_ratio, rows.back()[OC::VoidRatio]);
   // A constant-rate run's rows between the stages' ends change nothing:
   // the summary reads each stage's last row.
   std::vector<std::vector<double>> dense;
@@ -92,34 +92,34 @@ TEST(Oedometer, FrictionlessRingOfBeads) {
   run_to_end(t);
   const auto& rows = t.series();
   for (const auto& r : rows)
-    std::printf("stage %g: sigma_v/target %.5f, floor/cap %.5f, K0 %.4f, e %.5f, M %.4g Pa\n", r[C::Stage], r[C::Vertical] / r[C::Target],
-                r[C::FloorStress] / r[C::Vertical], r[C::K0], r[C::VoidRatio], r[C::Modulus]);
+    std::printf("stage %g: sigma_v/target %.5f, floor/cap %.5f, K0 %.4f, e %.5f, M %.4g Pa\n", r[OC::Stage], r[OC::Vertical] / r[OC::Target],
+                r[OC::FloorStress] / r[OC::Vertical], r[OC::K0], r[OC::VoidRatio], r[OC::Modulus]);
   ASSERT_EQ(rows.size(), 7u);
-  const double e0 = rows[0][C::VoidRatio], h0 = rows[0][C::Height];
+  const double e0 = rows[0][OC::VoidRatio], h0 = rows[0][OC::Height];
   for (std::size_t i = 0; i < rows.size(); ++i) {
     SCOPED_TRACE(i);
     const auto& r = rows[i];
-    EXPECT_EQ(r[C::Stage], static_cast<double>(i));
+    EXPECT_EQ(r[OC::Stage], static_cast<double>(i));
     // The servo held the stage's stress within 1 %.
-    EXPECT_NEAR(r[C::Vertical] / r[C::Target], 1.0, 0.01);
+    EXPECT_NEAR(r[OC::Vertical] / r[OC::Target], 1.0, 0.01);
     // Frictionless walls carry no vertical load: the floor sees the cap's stress.
-    EXPECT_NEAR(r[C::FloorStress] / r[C::Vertical], 1.0, 0.01);
+    EXPECT_NEAR(r[OC::FloorStress] / r[OC::Vertical], 1.0, 0.01);
     // Strain, height and void ratio agree: (e0 - e) / (1 + e0) = eps = 1 - H / H0.
-    EXPECT_NEAR(r[C::Strain], 1 - r[C::Height] / h0, 1e-12);
-    EXPECT_NEAR((e0 - r[C::VoidRatio]) / (1 + e0), r[C::Strain], 1e-12);
+    EXPECT_NEAR(r[OC::Strain], 1 - r[OC::Height] / h0, 1e-12);
+    EXPECT_NEAR((e0 - r[OC::VoidRatio]) / (1 + e0), r[OC::Strain], 1e-12);
   }
   // K0 of the normally consolidated specimen (stresses at least 4 x the
   // consolidation's: its first stages remember the preparation) in [0.3, 0.7].
   for (std::size_t i = 2; i <= 4; ++i) {
-    EXPECT_GT(rows[i][C::K0], 0.3) << i;
-    EXPECT_LT(rows[i][C::K0], 0.7) << i;
+    EXPECT_GT(rows[i][OC::K0], 0.3) << i;
+    EXPECT_LT(rows[i][OC::K0], 0.7) << i;
   }
   // Unloading locks lateral stress in: K0 at 200 kPa is higher after 800 kPa.
-  EXPECT_GT(rows[5][C::K0], rows[2][C::K0]);
+  EXPECT_GT(rows[5][OC::K0], rows[2][OC::K0]);
   // Loading compresses, unloading swells back less than it compressed.
-  for (std::size_t i = 1; i <= 4; ++i) EXPECT_LT(rows[i][C::VoidRatio], rows[i - 1][C::VoidRatio]) << i;
-  EXPECT_GT(rows[5][C::VoidRatio], rows[4][C::VoidRatio]);
-  EXPECT_LT(rows[6][C::VoidRatio], rows[0][C::VoidRatio]);
+  for (std::size_t i = 1; i <= 4; ++i) EXPECT_LT(rows[i][OC::VoidRatio], rows[i - 1][OC::VoidRatio]) << i;
+  EXPECT_GT(rows[5][OC::VoidRatio], rows[4][OC::VoidRatio]);
+  EXPECT_LT(rows[6][OC::VoidRatio], rows[0][OC::VoidRatio]);
   const OedometerSummary o = summarise_oedometer(rows);
   std::printf("Cc %.4f, Cs %.4f, n %.3f\n", o.compression_index, o.swelling_index, o.modulus_stress_exponent);
   EXPECT_GT(o.compression_index, 0);
@@ -160,13 +160,13 @@ TEST(Oedometer, WallFrictionCarriesPartOfTheLoad) {
   OedometerTest t(spec);
   run_to_end(t);
   const auto& r = t.series().back();
-  const double k = r[C::Lateral] / (0.5 * (r[C::Vertical] + r[C::FloorStress]));
-  const double janssen = std::exp(-4 * 0.19 * k * r[C::Height] / spec.box.length);
+  const double k = r[OC::Lateral] / (0.5 * (r[OC::Vertical] + r[OC::FloorStress]));
+  const double janssen = std::exp(-4 * 0.19 * k * r[OC::Height] / spec.box.length);
   std::printf("floor / cap stress with wall friction 0.3 at 400 kPa: %.4f (Janssen's bound %.4f, K %.3f)\n",
-              r[C::FloorStress] / r[C::Vertical], janssen, k);
-  EXPECT_NEAR(r[C::Vertical] / 400e3, 1.0, 0.01);
-  EXPECT_LT(r[C::FloorStress] / r[C::Vertical], 0.99);
-  EXPECT_GT(r[C::FloorStress] / r[C::Vertical], janssen);
+              r[OC::FloorStress] / r[OC::Vertical], janssen, k);
+  EXPECT_NEAR(r[OC::Vertical] / 400e3, 1.0, 0.01);
+  EXPECT_LT(r[OC::FloorStress] / r[OC::Vertical], 0.99);
+  EXPECT_GT(r[OC::FloorStress] / r[OC::Vertical], janssen);
 }
 
 TEST(Oedometer, StagesAndTheirStresses) {
@@ -206,38 +206,38 @@ TEST(Oedometer, ConstantRateOfStrainFollowsTheStagedCurve) {
   // Each stage's last row is where the cap stress reached the stage's stress.
   std::vector<std::vector<double>> ends;
   for (std::size_t i = 0; i < rows.size(); ++i)
-    if (i + 1 == rows.size() || rows[i + 1][C::Stage] != rows[i][C::Stage]) ends.push_back(rows[i]);
+    if (i + 1 == rows.size() || rows[i + 1][OC::Stage] != rows[i][OC::Stage]) ends.push_back(rows[i]);
   ASSERT_EQ(ends.size(), 4u);
-  const double h0 = rows[0][C::Height], e0 = rows[0][C::VoidRatio], t0 = rows[0][C::Time], v = rate.cap_speed();
-  EXPECT_EQ(rows[0][C::VoidRatio], steps[0][C::VoidRatio]);  // the same consolidated specimen
+  const double h0 = rows[0][OC::Height], e0 = rows[0][OC::VoidRatio], t0 = rows[0][OC::Time], v = rate.cap_speed();
+  EXPECT_EQ(rows[0][OC::VoidRatio], steps[0][OC::VoidRatio]);  // the same consolidated specimen
   for (std::size_t i = 0; i < rows.size(); ++i) {
     SCOPED_TRACE(i);
     const auto& r = rows[i];
     if (i > 0) {
-      EXPECT_GE(r[C::Stage], rows[i - 1][C::Stage]);
+      EXPECT_GE(r[OC::Stage], rows[i - 1][OC::Stage]);
     }
-    EXPECT_NEAR(r[C::Strain], 1 - r[C::Height] / h0, 1e-12);
-    EXPECT_NEAR((e0 - r[C::VoidRatio]) / (1 + e0), r[C::Strain], 1e-12);
+    EXPECT_NEAR(r[OC::Strain], 1 - r[OC::Height] / h0, 1e-12);
+    EXPECT_NEAR((e0 - r[OC::VoidRatio]) / (1 + e0), r[OC::Strain], 1e-12);
     // Loading: the cap comes down at the constant speed.
-    if (r[C::Stage] <= 2) {
-      EXPECT_NEAR(h0 - r[C::Height], v * (r[C::Time] - t0), 1e-9 * h0);
+    if (r[OC::Stage] <= 2) {
+      EXPECT_NEAR(h0 - r[OC::Height], v * (r[OC::Time] - t0), 1e-9 * h0);
     }
   }
   for (std::size_t k = 1; k < ends.size(); ++k) {
     SCOPED_TRACE(k);
-    const double target = ends[k][C::Target], sv = ends[k][C::Vertical];
+    const double target = ends[k][OC::Target], sv = ends[k][OC::Vertical];
     std::printf("stage %zu: sigma_v/target %.4f; e %.5f at a constant rate, %.5f in stages; K0 %.3f, %.3f\n", k,
-                sv / target, ends[k][C::VoidRatio], steps[k][C::VoidRatio], ends[k][C::K0], steps[k][C::K0]);
+                sv / target, ends[k][OC::VoidRatio], steps[k][OC::VoidRatio], ends[k][OC::K0], steps[k][OC::K0]);
     if (k < 3) {
       EXPECT_GE(sv, target);  // loading: reached from below
     } else {
       EXPECT_LE(sv, target);  // unloading: from above
     }
     EXPECT_NEAR(sv / target, 1.0, 0.03);
-    EXPECT_NEAR(ends[k][C::VoidRatio], steps[k][C::VoidRatio], 0.05 * (e0 - steps[2][C::VoidRatio]));  // 5 % of the compression
+    EXPECT_NEAR(ends[k][OC::VoidRatio], steps[k][OC::VoidRatio], 0.05 * (e0 - steps[2][OC::VoidRatio]));  // 5 % of the compression
     // K0: the stages' rests (creep at a constant sigma_v) move it a little,
     // most on unloading, where the lateral stress is locked in.
-    EXPECT_NEAR(ends[k][C::K0], steps[k][C::K0], k < 3 ? 0.05 : 0.1);
+    EXPECT_NEAR(ends[k][OC::K0], steps[k][OC::K0], k < 3 ? 0.05 : 0.1);
   }
   const OedometerSummary a = summarise_oedometer(rows), b = summarise_oedometer(steps);
   std::printf("Cc %.4f / %.4f, Cs %.4f / %.4f, n %.3f / %.3f (constant rate / stages)\n", a.compression_index,

@@ -13,14 +13,14 @@
 #include <vector>
 
 using namespace grainlab;
-using C = TriaxialColumn;
+using TC = TriaxialColumn;
 
 namespace {
 
 // A row in triaxial_series_columns() order with the columns the summary reads.
 std::vector<double> row(double eps_a, double eps_v, double q, double p, double e) {
   std::vector<double> r(triaxial_series_columns().size(), 0.0);
-  r[C::AxialStrain] = eps_a, r[C::VolumetricStrain] = eps_v, r[C::Deviator] = q, r[C::Mean] = p, r[C::Ratio] = q / p, r[C::VoidRatio] = e;
+  r[TC::AxialStrain] = eps_a, r[TC::VolumetricStrain] = eps_v, r[TC::Deviator] = q, r[TC::Mean] = p, r[TC::Ratio] = q / p, r[TC::VoidRatio] = e;
   return r;
 }
 
@@ -83,26 +83,26 @@ TEST(Triaxial, BeadsHoldTheCellPressureAndTheIdentities) {
   const auto& rows = t.series();
   ASSERT_GE(rows.size(), 20u);
   // The isotropic state: all five walls at sigma_3 within the tolerance.
-  EXPECT_NEAR(rows[0][C::Sigma1] / 50e3, 1.0, 0.01);
-  EXPECT_NEAR(rows[0][C::Sigma3] / 50e3, 1.0, 0.01);
-  EXPECT_NEAR(rows[0][C::AxialStrain], 0.0, 1e-15);
-  const double e0 = rows[0][C::VoidRatio], t0 = rows[0][C::Time];
+  EXPECT_NEAR(rows[0][TC::Sigma1] / 50e3, 1.0, 0.01);
+  EXPECT_NEAR(rows[0][TC::Sigma3] / 50e3, 1.0, 0.01);
+  EXPECT_NEAR(rows[0][TC::AxialStrain], 0.0, 1e-15);
+  const double e0 = rows[0][TC::VoidRatio], t0 = rows[0][TC::Time];
   double mean_error = 0, worst_error = 0;
   for (std::size_t i = 1; i < rows.size(); ++i) {
     SCOPED_TRACE(i);
     const auto& r = rows[i];
-    EXPECT_NEAR(r[C::Deviator], r[C::Sigma1] - r[C::Sigma3], 1e-9 * r[C::Sigma1]);                 // q = sigma_1 - sigma_3
-    EXPECT_NEAR(r[C::Mean], (r[C::Sigma1] + 2 * r[C::Sigma3]) / 3, 1e-9 * r[C::Sigma1]);       // p' = (sigma_1 + 2 sigma_3) / 3
-    EXPECT_NEAR((e0 - r[C::VoidRatio]) / (1 + e0), r[C::VolumetricStrain], 1e-12);            // eps_v from the walls = from e
-    EXPECT_GT(r[C::AxialStrain], rows[i - 1][C::AxialStrain]);
-    mean_error += r[C::SideError] / (rows.size() - 1);
-    worst_error = std::max(worst_error, r[C::SideError]);
-    EXPECT_LT(r[C::SideError], 0.01);  // sigma_3 held within 1 % on every side at every sample
-    EXPECT_GT(r[C::Ratio], 0.0);  // compression: sigma_1 > sigma_3
+    EXPECT_NEAR(r[TC::Deviator], r[TC::Sigma1] - r[TC::Sigma3], 1e-9 * r[TC::Sigma1]);                 // q = sigma_1 - sigma_3
+    EXPECT_NEAR(r[TC::Mean], (r[TC::Sigma1] + 2 * r[TC::Sigma3]) / 3, 1e-9 * r[TC::Sigma1]);       // p' = (sigma_1 + 2 sigma_3) / 3
+    EXPECT_NEAR((e0 - r[TC::VoidRatio]) / (1 + e0), r[TC::VolumetricStrain], 1e-12);            // eps_v from the walls = from e
+    EXPECT_GT(r[TC::AxialStrain], rows[i - 1][TC::AxialStrain]);
+    mean_error += r[TC::SideError] / (rows.size() - 1);
+    worst_error = std::max(worst_error, r[TC::SideError]);
+    EXPECT_LT(r[TC::SideError], 0.01);  // sigma_3 held within 1 % on every side at every sample
+    EXPECT_GT(r[TC::Ratio], 0.0);  // compression: sigma_1 > sigma_3
   }
   // The cap moves at a constant speed: eps_a grows linearly in time.
-  const double rate = rows.back()[C::AxialStrain] / (rows.back()[C::Time] - t0);  // axial strain per second
-  EXPECT_NEAR(rate * (rows[10][C::Time] - t0), rows[10][C::AxialStrain], 1e-9);
+  const double rate = rows.back()[TC::AxialStrain] / (rows.back()[TC::Time] - t0);  // axial strain per second
+  EXPECT_NEAR(rate * (rows[10][TC::Time] - t0), rows[10][TC::AxialStrain], 1e-9);
   std::printf("side stress error: mean %.4f, worst %.4f\n", mean_error, worst_error);
   const TriaxialSummary s = summarise_triaxial(rows);
   EXPECT_GT(s.peak_friction_angle_deg, 10);
@@ -118,7 +118,7 @@ double last_fifth_mean(const std::vector<std::vector<double>>& rows, int c) {
   double sum = 0;
   int n = 0;
   for (const auto& r : rows)
-    if (r[C::AxialStrain] >= 0.8 * rows.back()[C::AxialStrain]) sum += r[c], ++n;
+    if (r[TC::AxialStrain] >= 0.8 * rows.back()[TC::AxialStrain]) sum += r[c], ++n;
   return sum / n;
 }
 
@@ -168,10 +168,10 @@ BeadMean bead_mean(double deposition_friction, double void_ratio) {
     if (rows.empty()) continue;
     const TriaxialSummary s = summarise_triaxial(rows);
     constexpr double w = 1.0 / std::size(kSeeds);
-    m.e0 += w * rows[0][C::VoidRatio], m.e_cs += w * last_fifth_mean(rows, C::VoidRatio);
+    m.e0 += w * rows[0][TC::VoidRatio], m.e_cs += w * last_fifth_mean(rows, TC::VoidRatio);
     m.eta_cs += w * s.critical_stress_ratio, m.eta_peak += w * s.peak_stress_ratio;
     std::printf("friction %.1f seed %d: e at shear %.4f, over the last fifth %.4f; q/p' peak %.4f, critical %.4f\n",
-                deposition_friction, seed, rows[0][C::VoidRatio], last_fifth_mean(rows, C::VoidRatio),
+                deposition_friction, seed, rows[0][TC::VoidRatio], last_fifth_mean(rows, TC::VoidRatio),
                 s.peak_stress_ratio, s.critical_stress_ratio);
   }
   return m;
