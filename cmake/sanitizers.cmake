@@ -22,8 +22,8 @@ if(GRAINLAB_FUZZ)
 endif()
 
 # ITK's header code compiled into the files that include it is not checked
-# (cmake/sanitizer_ignorelist.txt says why); every line of grainlab's still is. The files:
-# itk_including_srcs, set by CMakeLists.txt.
+# (cmake/sanitizer_ignorelist.txt says why); every line of grainlab's still is.
+# The files: itk_including_srcs, set by CMakeLists.txt.
 if((GRAINLAB_SANITIZE OR GRAINLAB_FUZZ) AND CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
   set_source_files_properties(${itk_including_srcs} PROPERTIES COMPILE_OPTIONS
                               "-fsanitize-ignorelist=${CMAKE_SOURCE_DIR}/cmake/sanitizer_ignorelist.txt")

@@ -9,7 +9,6 @@
 
 #include <cstdlib>
 #include <fstream>
-#include <sstream>
 
 namespace grainlab::ct {
 namespace {
@@ -275,12 +274,10 @@ TEST_F(CtBadInput, HelpTeachesTheSteps) {
   const fs::path out = dir_ / "help.txt";
   const int status = std::system((std::string(GRAINLAB_BINARY) + " ct segment --help > " + out.string()).c_str());
   EXPECT_EQ(WEXITSTATUS(status), 0);
-  std::ifstream in(out);
-  std::stringstream s;
-  s << in.rdbuf();
+  const std::string help = grainlab::test::file_text(out);
   for (const char* word : {"Otsu", "h-maxima", "watershed", "--voxel-size", "metres", "Example:", "grains.csv",
                            "space units", "folder of 2D", "--crop", "--bin"}) {
-    EXPECT_NE(s.str().find(word), std::string::npos) << word;
+    EXPECT_NE(help.find(word), std::string::npos) << word;
   }
 }
 

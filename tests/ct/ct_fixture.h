@@ -5,6 +5,7 @@
 #include "ct/raw_volume.h"
 #include "ct/segmentation.h"
 #include "ct/synthetic_volume.h"
+#include "file_text.h"
 #include "geometry/mass_properties.h"
 
 #include <gtest/gtest.h>
@@ -14,7 +15,6 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -110,10 +110,7 @@ inline Outcome run_grainlab(const std::string& args, const std::filesystem::path
   const std::filesystem::path err = dir / "stderr.txt";
   const std::string cmd = std::string(GRAINLAB_BINARY) + " " + args + " > /dev/null 2> " + err.string();
   const int status = std::system(cmd.c_str());
-  std::ifstream in(err);
-  std::stringstream s;
-  s << in.rdbuf();
-  return {WEXITSTATUS(status), s.str()};
+  return {WEXITSTATUS(status), grainlab::test::file_text(err)};
 }
 
 // A fresh empty folder under the system's temporary folder.
